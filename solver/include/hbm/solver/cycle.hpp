@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The explicit central-difference cycle, one named function per phase (implemented in
+// solver/src/core/cycle.cpp; the order is written once in docs/cycle.md).
+#pragma once
+
+#include "hbm/solver/model.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace hbm::solver {
+
+// Global energies through t^n [energy] and mass bookkeeping [mass].
+struct GlobalEnergies {
+  double kinetic = 0, rotational = 0, internal = 0, hourglass = 0, contact = 0;
+  double external_work = 0;
+  double initial_total = 0;  // E_0 = E_kin(0) + E_int(0)
+  double added_mass = 0, mass0 = 0;
+  // (E_kin + E_rot + E_int + E_hg + E_contact) / (E_0 + W_ext) - 1; 0 when the
+  // denominator is 0.
+  double energy_error() const;
+  double mass_ratio() const { return mass0 > 0 ? added_mass / mass0 : 0.0; }
+};
+
+// Wall-clock seconds spent per phase, for the timing table and the bench.
+struct PhaseTimes {
+  double element_forces = 0, interactions = 0, assembly = 0, constraints = 0,
+         time_step = 0, nodal_update = 0, output = 0;
+};
+
+// Why a cycle asks the loop to stop (None = keep going).
+enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass, EnergyError };
+
+struct CycleState {
+  StepContext step;
+  GlobalEnergies energies;
+  PhaseTimes times;
+  StopReason stop = StopReason::None;
+  std::string stop_message;  // element / part / time or parts that took the mass
+  std::vector<GroupStepResult> group_results;  // one per group, this cycle
+};
+
+// Phases (formulas in cycle.cpp):
+void compute_element_forces(Model& m, CycleState& c);   // groups -> slot buffers
+void assemble_nodal_forces(Model& m, CycleState& c);    // slots -> f, M, k_n (CSR order)
+void add_interaction_forces(Model& m, CycleState& c);   // contacts, walls, gravity
+void gather_constraint_forces(Model& m, CycleState& c); // rigid bodies: secondaries -> main
+void choose_time_step(Model& m, CycleState& c);         // dt^{n+1/2}; nodal mass scaling
+void update_velocities(Model& m, CycleState& c);        // a = f/m; v += dt a; omega too
+void impose_constraints(Model& m, CycleState& c);       // BCS, IMPVEL, walls, then secondaries
+void account_energies(Model& m, CycleState& c);         // energies through t^n
+void update_positions(Model& m, CycleState& c);         // x^{n+1} = x^n + dt v^{n+1/2}
+
+// One full cycle in the order above (outputs are called by the run loop between
+// account_energies and update_positions, so every written value is at t^n).
+void run_cycle(Model& m, CycleState& c);
+
+}  // namespace hbm::solver

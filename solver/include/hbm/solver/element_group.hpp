@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Element group: the elements of one formulation and one part (hence one material and
+// one property), stored as struct of arrays. A group computes, in parallel over fixed
+// chunks, the force each element exerts on each of its nodes into group-local "slot"
+// buffers (slot s = e * nodes_per_element + k). The core then assembles all slots into
+// the nodal arrays through a node->slot incidence built once in the build phase, summing
+// each node's slots in (group order, element order): deterministic for any thread count.
+// Groups never write nodal arrays.
+#pragma once
+
+#include "hbm/solver/nodal_state.hpp"
+#include "hbm/solver/step_context.hpp"
+#include "hbm/solver/th_probe.hpp"
+#include "hbm/solver/types.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hbm::solver {
+
+// VTK cell types written as themselves (VTK file format numbering).
+enum class VtkCellType : std::uint8_t {
+  Line = 3, Triangle = 5, Quad = 9, Tetra = 10, Hexahedron = 12, Wedge = 13, Pyramid = 14
+};
+
+// Per-cell animation fields a group fills (part id and element id come from the base).
+enum class CellField : std::uint8_t {
+  VonMises,       // von Mises stress [stress]
+  PlasticStrain,  // equivalent plastic strain [-]
+  Eroded,         // 1 if deleted, else 0
+};
+
+// Cumulative energies of a group since t = 0, through the current t^n [energy].
+struct GroupEnergy {
+  double internal = 0.0;   // stress work incl. elements already deleted
+  double hourglass = 0.0;  // work of the hourglass forces
+  double eroded = 0.0;     // internal energy held by deleted elements when deleted
+                           //   (part of `internal`, reported separately)
+};
+
+// What one compute_forces call reports besides the slot buffers.
+struct GroupStepResult {
+  // Smallest critical element step L/c (no safety factor) and its element; the core
+  // applies the 0.9 factor when no /DT/NODA/CST is given [time].
+  double dt_min = std::numeric_limits<double>::infinity();
+  Index dt_element = kNoIndex;
+  // Lowest local index of an element with non-positive volume (Jacobian) this cycle;
+  // the core stops the run naming it. kNoIndex if none.
+  Index inverted_element = kNoIndex;
+};
+
+class ElementGroup : public ThSource {
+ public:
+  ~ElementGroup() override = default;
+
+  // --- identity and topology (filled by the group's builder) -------------------------
+  std::string keyword;            // deck keyword, e.g. "/BRICK", "/TETRA4", "/SHELL"
+  Index part = kNoIndex;          // index into Model::parts
+  std::size_t n_elements = 0;
+  std::size_t nodes_per_element = 0;
+  std::vector<Index> connectivity;        // node index per slot (n_elements * npe)
+  std::vector<std::int64_t> element_id;   // user id per element
+  std::vector<std::uint8_t> alive;        // 0 once deleted (eroded)
+
+  // --- per-cycle outputs (overwritten by compute_forces) -----------------------------
+  // Force exerted by the element on its node, i.e. -f_int (+ hourglass, viscosity),
+  // per slot [force]. Deleted elements write 0.
+  Vec3Soa slot_force;
+  // Same for moments; left empty by groups without rotational DOFs [force*length].
+  Vec3Soa slot_moment;
+  // Nodal stiffness contribution per slot for the nodal time step, defined so that a
+  // node shared only by elements like this one gets sqrt(2 m_n / k_n) = element step:
+  //   k_slot = 2 * m_slot / dt_e^2, m_slot = physical lumped element mass at the node,
+  //   dt_e = critical element step (L/c, no factor) [force/length].
+  std::vector<double> slot_stiffness;
+  // Rotational counterpart (empty without rotational DOFs) [force*length/rad].
+  std::vector<double> slot_rot_stiffness;
+
+  // --- cumulative bookkeeping ---------------------------------------------------------
+  GroupEnergy energy;
+  std::int64_t n_eroded = 0;               // elements deleted so far
+  std::vector<Index> newly_eroded;         // deleted during the last compute_forces;
+                                           //   the core logs and clears it
+
+  // Allocate the slot buffers from n_elements and nodes_per_element (call at the end of
+  // the builder); `rotational` also allocates the moment buffers.
+  void allocate_slots(bool rotational = false);
+  bool has_rotation_slots() const { return !slot_moment.x.empty(); }
+
+  // --- behaviour -------------------------------------------------------------------------
+  // Formulation name for listings and the bench, e.g. "brick8 FB 1-point".
+  virtual std::string_view formulation() const = 0;
+
+  // Compute element forces at t^n from x^n and v^{n-1/2} (dt_prev); update stresses and
+  // energies; fill the slot buffers and `result`. Parallel over chunks of kChunk
+  // elements; every reduction via per-chunk partials summed in chunk order.
+  virtual void compute_forces(const StepContext& step, const NodalState& nodes,
+                              GroupStepResult& result) = 0;
+
+  // VTK cell of element e: writes its distinct node indices to `nodes` (capacity
+  // nodes_per_element) and returns the cell type and count (degenerate bricks as wedge
+  // or tetra). Default: all nodes, type from nodes_per_element (2 line, 3 triangle,
+  // 4 quad for shells / tetra for solids is decided by `solid_cells()`, 8 hexahedron).
+  virtual VtkCellType vtk_cell(std::size_t e, Index* nodes, int& n_nodes) const;
+  virtual bool solid_cells() const { return true; }
+
+  // Fill one value per element for an animation field; default 0 (Eroded from `alive`).
+  virtual void cell_field(CellField field, std::span<double> out) const;
+};
+
+}  // namespace hbm::solver
