@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Build phase services handed to every builder (one per element / interaction /
-// constraint type, listed in solver/src/core/builders.def). A builder reads the cards
+// constraint type, listed in solver/src/build/builders.def). A builder reads the cards
 // it owns from the decks, resolves ids through this context, adds nodal masses and
 // rotational DOFs, and appends its groups, interactions or constraints. Errors are
 // collected (file:line, keyword, field) and the run stops after the build phase if any.
@@ -90,7 +90,7 @@ struct BuilderEntry {
   BuilderFn build;
 };
 
-// All builders in execution order (solver/src/core/builders.def).
+// All builders in execution order (solver/src/build/builders.def).
 const std::vector<BuilderEntry>& registered_builders();
 
 // Build phase entry: core tables (nodes, parts, functions, groups of nodes, run control),
