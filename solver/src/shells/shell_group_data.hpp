@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Struct-of-arrays state of one shell element group (one formulation, one material, one
+// section) and the views the element kernels read and write. Independent of the engine
+// core: the engine adaptor (shell_element_group.cpp) owns one ShellGroupData and hands
+// the kernels views of the nodal arrays.
+//
+// Layout: per-element arrays indexed [e]; per-point arrays element-major
+// [e * n_points + p] (the kernel loops over an element's points innermost).
+#pragma once
+
+#include "shells/shell_material.hpp"
+#include "shells/shell_section.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace hbm::solver::shells {
+
+enum class ShellKind : std::uint8_t { QuadBT, TriaDKT };
+
+// Read-only nodal fields (global frame, struct of arrays).
+struct ShellNodalView {
+  const double *x, *y, *z;     // positions x^n
+  const double *vx, *vy, *vz;  // velocities v^{n-1/2}
+  const double *wx, *wy, *wz;  // angular velocities omega^{n-1/2}
+};
+
+struct ShellGroupData {
+  ShellKind kind = ShellKind::QuadBT;
+  int nodes_per_element = 4;
+  std::size_t n = 0;
+  ShellMaterial mat;
+  ShellSection sec;
+
+  std::vector<std::int32_t> conn;      // n * nodes_per_element, 0-based node indices
+  std::vector<std::int64_t> user_id;   // element ids
+  std::vector<std::int32_t> part;      // part index (engine's numbering) per element
+  std::vector<double> thick;           // current thickness [length]
+  std::vector<double> thick0;          // initial thickness [length]
+  std::vector<double> stress;          // n * np * 3: sxx, syy, sxy (corotational) [stress]
+  std::vector<double> epsp;            // n * np equivalent plastic strain [-]
+  std::vector<double> hist;            // n * np * mat.n_history()
+  std::vector<double> extra;           // per element: quad 7 (qx qy transverse shear
+                                       // resultants, 5 hourglass forces); tria 9
+                                       // (deviatoric moments at 3 points)
+  std::vector<std::uint8_t> n_failed;  // failed through-thickness points
+  std::vector<std::uint8_t> deleted;   // 1: element deleted (no force)
+  std::vector<double> eint;            // cumulative internal energy [energy]
+  std::vector<double> ehg;             // cumulative hourglass energy [energy]
+  std::vector<double> dt_elem;         // stable step L_c / c of the last evaluation [time]
+  std::vector<double> area;            // current area [length^2]
+  std::vector<double> force;           // n * nodes_per_element * 6: force and moment ON
+                                       // each node, global frame [force], [force*length]
+
+  int extra_per_element() const { return kind == ShellKind::QuadBT ? 7 : 9; }
+  // Sizes every array for n elements (conn, user_id, part, thick must be filled first).
+  void allocate();
+  // Von Mises stress (mean over points) and maximum plastic strain of element e.
+  double von_mises(std::size_t e) const;
+  double max_epsp(std::size_t e) const;
+};
+
+// Per-call totals returned by the kernels.
+struct ShellKernelTotals {
+  double dt_min = 1e300;  // smallest stable element step [time]
+  std::size_t newly_deleted = 0;
+};
+
+// Element forces of elements [e0, e1): reads the nodal view, updates the element state
+// with the step dt (the step the velocities act over), writes `force` and the energies.
+ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
+                                 std::size_t e0, std::size_t e1);
+ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
+                                  std::size_t e0, std::size_t e1);
+
+}  // namespace hbm::solver::shells

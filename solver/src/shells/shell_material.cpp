@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plane-stress point update of the shell materials (see shell_material.hpp for the
+// laws and the papers followed).
+#include "shells/shell_material.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hbm::solver::shells {
+
+double ShellMaterial::young() const {
+  if (law == ShellLaw::Viscoelastic) return 9.0 * K * G0 / (3.0 * K + G0);
+  return E;
+}
+
+double ShellMaterial::poisson() const {
+  if (law == ShellLaw::Viscoelastic) return (3.0 * K - 2.0 * G0) / (2.0 * (3.0 * K + G0));
+  return nu;
+}
+
+double ShellMaterial::plate_wave_speed() const {
+  const double e = young(), v = poisson();
+  return std::sqrt(e / (rho * (1.0 - v * v)));
+}
+
+std::string_view ShellMaterial::check() const {
+  if (!(rho > 0)) return "density must be > 0";
+  if (law == ShellLaw::Viscoelastic) {
+    if (!(K > 0) || !(G0 > 0)) return "LAW34 needs K > 0 and G0 > 0";
+    if (Ginf < 0 || Ginf > G0) return "LAW34 needs 0 <= Ginf <= G0";
+    if (beta < 0) return "LAW34 needs beta >= 0";
+    return {};
+  }
+  if (!(E > 0)) return "Young's modulus must be > 0";
+  if (!(nu > -1.0 && nu < 0.5)) return "Poisson's ratio must be in (-1, 0.5)";
+  if (law == ShellLaw::JohnsonCook) {
+    if (!(a > 0)) return "LAW2 yield stress a must be > 0";
+    if (b < 0 || n < 0) return "LAW2 needs b >= 0 and n >= 0";
+    if (c < 0 || !(epsdot0 > 0)) return "LAW2 needs c >= 0 and EPS_DOT_0 > 0";
+  }
+  if (law == ShellLaw::Tabulated) {
+    if (curve_eps.size() < 1 || curve_eps.size() != curve_sig.size())
+      return "LAW36 needs a yield curve with at least one point";
+    for (std::size_t i = 1; i < curve_eps.size(); ++i)
+      if (!(curve_eps[i] > curve_eps[i - 1])) return "LAW36 yield curve abscissae must increase";
+    if (!(curve_sig[0] > 0)) return "LAW36 initial yield stress must be > 0";
+  }
+  return {};
+}
+
+double ShellMaterial::yield(double eps_p, double epsdot, double& slope) const {
+  if (law == ShellLaw::JohnsonCook) {
+    double sy, h;
+    if (eps_p > 0) {
+      const double pw = std::pow(eps_p, n);
+      sy = a + b * pw;
+      h = b * n * pw / eps_p;
+    } else {
+      sy = a;
+      h = (n == 1.0) ? b : (n < 1.0 ? b * 1e6 : 0.0);  // slope at 0 (n < 1: steep, bounded)
+    }
+    if (c > 0 && epsdot > epsdot0) {
+      const double f = 1.0 + c * std::log(epsdot / epsdot0);
+      sy *= f;
+      h *= f;
+    }
+    if (sy > sig_max) {
+      sy = sig_max;
+      h = 0;
+    }
+    slope = h;
+    return sy;
+  }
+  // LAW36: linear interpolation, constant beyond the ends.
+  const auto& x = curve_eps;
+  const auto& y = curve_sig;
+  if (eps_p <= x.front() || x.size() == 1) {
+    slope = x.size() > 1 ? (y[1] - y[0]) / (x[1] - x[0]) : 0.0;
+    return y.front();
+  }
+  if (eps_p >= x.back()) {
+    slope = 0;
+    return y.back();
+  }
+  const auto it = std::upper_bound(x.begin(), x.end(), eps_p);
+  const std::size_t i = static_cast<std::size_t>(it - x.begin()) - 1;
+  slope = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+  return y[i] + slope * (eps_p - x[i]);
+}
+
+namespace {
+
+// Simo-Taylor plane-stress return: the trial stress in the invariant coordinates
+// S = sxx + syy, D = sxx - syy, T = sxy relaxes as
+//   S(g) = S_tr / (1 + E g / (3 (1 - nu))),  D(g) = D_tr / (1 + 2 G g),  T likewise,
+// with von Mises stress q(g)^2 = S^2/4 + 3 D^2/4 + 3 T^2 and plastic strain increment
+// deps_p = 2/3 g q(g). Solves q(g) - sigma_y(eps_p + 2/3 g q(g)) = 0 for g >= 0.
+PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStress& s,
+                                double& epsp, double S_old) {
+  PointResult r;
+  const double E = m.E, nu = m.nu, G = E / (2.0 * (1.0 + nu));
+  const double St = s.sxx + s.syy, Dt = s.sxx - s.syy, Tt = s.sxy;
+  const double q_tr = std::sqrt(0.25 * St * St + 0.75 * Dt * Dt + 3.0 * Tt * Tt);
+  double h;
+  const double sy0 = m.yield(epsp, epsdot, h);
+  if (q_tr <= sy0) {
+    r.dezz = -nu / E * (St - S_old);
+    return r;
+  }
+  const double c1 = E / (3.0 * (1.0 - nu)), c2 = 2.0 * G;
+  auto eval = [&](double g, double& q, double& dq, double& fval, double& dfval) {
+    const double a1 = 1.0 / (1.0 + c1 * g), a2 = 1.0 / (1.0 + c2 * g);
+    const double S = St * a1, D = Dt * a2, T = Tt * a2;
+    q = std::sqrt(0.25 * S * S + 0.75 * D * D + 3.0 * T * T);
+    const double Sp = -c1 * S * a1, Dp = -c2 * D * a2, Tp = -c2 * T * a2;
+    dq = q > 0 ? (0.25 * S * Sp + 0.75 * D * Dp + 3.0 * T * Tp) / q : 0.0;
+    double hh;
+    const double sy = m.yield(epsp + 2.0 / 3.0 * g * q, epsdot, hh);
+    fval = q - sy;
+    dfval = dq - hh * 2.0 / 3.0 * (q + g * dq);
+  };
+  // First guess from the 3D radial return: deps_p = f / (3G + H).
+  double g = (q_tr - sy0) / (3.0 * G + std::max(h, 0.0)) * 1.5 / q_tr;
+  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+  double q = q_tr, dq, f, df;
+  const double tol = 1e-12 * sy0;
+  for (int it = 0; it < 60; ++it) {
+    eval(g, q, dq, f, df);
+    if (std::abs(f) <= tol) break;
+    if (f > 0) lo = g; else hi = g;
+    double gn = (df < 0) ? g - f / df : -1.0;
+    if (!(gn > lo && gn < hi)) gn = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * g + 1e-300;
+    g = gn;
+  }
+  const double a1 = 1.0 / (1.0 + c1 * g), a2 = 1.0 / (1.0 + c2 * g);
+  const double S = St * a1, D = Dt * a2;
+  s.sxx = 0.5 * (S + D);
+  s.syy = 0.5 * (S - D);
+  s.sxy = Tt * a2;
+  r.depsp = 2.0 / 3.0 * g * q;
+  epsp += r.depsp;
+  // Elastic thickness strain plus plastic incompressibility: deps_p_zz = -g S / 3.
+  r.dezz = -nu / E * (S - S_old) - g * S / 3.0;
+  if (epsp >= m.eps_p_max) r.failed_now = true;
+  return r;
+}
+
+}  // namespace
+
+PointResult update_point(const ShellMaterial& m, const double de[3], double dt, PointStress& s,
+                         double& epsp, double* hist) {
+  if (m.law == ShellLaw::Viscoelastic) {
+    // sigma = 2 Ginf e + h + K eps_v 1, h_{n+1} = E1 h_n + 2 (G0 - Ginf) phi de,
+    // E1 = exp(-beta dt), phi = (1 - E1) / (beta dt); dezz from sigma_zz = 0.
+    const double x = m.beta * dt;
+    const double E1 = std::exp(-x);
+    const double phi = x > 1e-8 ? (1.0 - E1) / x : 1.0 - 0.5 * x;
+    const double Gv = (m.G0 - m.Ginf) * phi, Ge = m.Ginf + Gv;
+    const double mm = de[0] + de[1];
+    const double r = (E1 - 1.0) * hist[2];
+    const double dezz = (-(m.K - 2.0 / 3.0 * Ge) * mm - r) / (4.0 / 3.0 * Ge + m.K);
+    const double dv = mm + dezz;
+    const double dexx = de[0] - dv / 3.0, deyy = de[1] - dv / 3.0, dezz_d = dezz - dv / 3.0;
+    s.sxx += 2.0 * Ge * dexx + (E1 - 1.0) * hist[0] + m.K * dv;
+    s.syy += 2.0 * Ge * deyy + (E1 - 1.0) * hist[1] + m.K * dv;
+    s.sxy += Ge * de[2] + (E1 - 1.0) * hist[3];
+    hist[0] = E1 * hist[0] + 2.0 * Gv * dexx;
+    hist[1] = E1 * hist[1] + 2.0 * Gv * deyy;
+    hist[2] = E1 * hist[2] + 2.0 * Gv * dezz_d;
+    hist[3] = E1 * hist[3] + Gv * de[2];
+    PointResult res;
+    res.dezz = dezz;
+    return res;
+  }
+  // Plane-stress Hooke predictor.
+  const double E = m.E, nu = m.nu;
+  const double c = E / (1.0 - nu * nu);
+  const double S_old = s.sxx + s.syy;
+  s.sxx += c * (de[0] + nu * de[1]);
+  s.syy += c * (nu * de[0] + de[1]);
+  s.sxy += c * 0.5 * (1.0 - nu) * de[2];
+  if (m.law == ShellLaw::Elastic) {
+    PointResult res;
+    res.dezz = -nu / E * (s.sxx + s.syy - S_old);
+    return res;
+  }
+  double epsdot = 0;
+  if (m.c > 0 && dt > 0) {
+    const double eq2 = 4.0 / 3.0 * (de[0] * de[0] + de[1] * de[1] + de[0] * de[1]) +
+                       de[2] * de[2] / 3.0;
+    epsdot = std::sqrt(eq2) / dt;
+  }
+  return return_plane_stress(m, epsdot, s, epsp, S_old);
+}
+
+}  // namespace hbm::solver::shells

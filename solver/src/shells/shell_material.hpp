@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Materials on shells: the stress update of one through-thickness integration point in
+// plane stress (sigma_zz = 0), in the element's corotational frame.
+//
+//  - LAW1  isotropic hypoelastic (plane-stress Hooke).
+//  - LAW2  Johnson-Cook J2 plasticity, yield sigma_y = a + b eps_p^n (capped by SIG_max0),
+//          strain-rate term c ln(epsdot/epsdot0) when c > 0.
+//  - LAW36 J2 plasticity with a tabulated yield curve sigma_y(eps_p) (linear
+//          interpolation, constant extrapolation beyond the last abscissa, scaled).
+//    Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
+//    algorithm for plane stress elastoplasticity", IJNME 22: 649-670 (Simo & Hughes,
+//    Computational Inelasticity, section 3.4): the trial stress is relaxed along the
+//    plane-stress projected flow direction and a scalar Newton iteration (safeguarded by
+//    bisection) solves for the consistency parameter. EPS_p_max failure: a point whose
+//    equivalent plastic strain reaches EPS_p_max carries no stress afterwards.
+//  - LAW34 Boltzmann viscoelasticity G(t) = Ginf + (G0 - Ginf) exp(-beta t) with bulk K,
+//    recursive update of the hereditary integral (Herrmann & Peterson 1968 /
+//    Radioss LAW34); the thickness strain increment is solved so that sigma_zz = 0.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <vector>
+
+namespace hbm::solver::shells {
+
+enum class ShellLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, Viscoelastic = 34, Tabulated = 36 };
+
+struct ShellMaterial {
+  ShellLaw law = ShellLaw::Elastic;
+  std::int64_t id = 0;
+  double rho = 0, E = 0, nu = 0;  // [density], [stress], [-]
+  // LAW2
+  double a = 0, b = 0, n = 1;
+  double c = 0, epsdot0 = 1;  // strain-rate term (c = 0: none)
+  double sig_max = std::numeric_limits<double>::infinity();
+  // LAW2 / LAW36: equivalent plastic strain at failure (infinity: none)
+  double eps_p_max = std::numeric_limits<double>::infinity();
+  // LAW36: yield curve, abscissa plastic strain, ordinate stress (already scaled)
+  std::vector<double> curve_eps, curve_sig;
+  // LAW34
+  double K = 0, G0 = 0, Ginf = 0, beta = 0;
+
+  bool plastic() const { return law == ShellLaw::JohnsonCook || law == ShellLaw::Tabulated; }
+  // History values per integration point (LAW34: hereditary deviatoric stresses).
+  int n_history() const { return law == ShellLaw::Viscoelastic ? 4 : 0; }
+  // Instantaneous Young's modulus and Poisson ratio (LAW34 from K and G0).
+  double young() const;
+  double poisson() const;
+  double shear_modulus() const { return young() / (2.0 * (1.0 + poisson())); }
+  // Plate wave speed c = sqrt(E / (rho (1 - nu^2))) [length/time].
+  double plate_wave_speed() const;
+  // Yield stress and hardening slope d sigma_y / d eps_p at plastic strain eps_p,
+  // for a total strain rate epsdot (LAW2 with c > 0).
+  double yield(double eps_p, double epsdot, double& slope) const;
+
+  // Checks the parameters; returns an empty string when valid, else what is wrong.
+  std::string_view check() const;
+};
+
+// State of one integration point, in the element's corotational frame.
+struct PointStress {
+  double sxx, syy, sxy;  // [stress]
+};
+
+// Result of one point update.
+struct PointResult {
+  double dezz = 0;      // thickness strain increment (for Ithick) [-]
+  double depsp = 0;     // equivalent plastic strain increment [-]
+  bool failed_now = false;  // eps_p reached EPS_p_max in this update
+};
+
+// Updates the stress of one point for the in-plane strain increment
+// de = (dexx, deyy, gamma_xy) (engineering shear) over a step dt.
+// `epsp` is the point's equivalent plastic strain (updated), `hist` its n_history()
+// values. A point already failed (epsp >= eps_p_max) must not be passed in.
+PointResult update_point(const ShellMaterial& m, const double de[3], double dt,
+                         PointStress& s, double& epsp, double* hist);
+
+}  // namespace hbm::solver::shells
