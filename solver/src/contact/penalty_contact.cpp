@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// /INTER/TYPE7 penalty contact kernel: sort (bucket grid), per-cycle projection, normal
+// penalty with damping, regularised Coulomb friction, energies.
+#include "penalty_contact.hpp"
+
+#include "segment_projection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hbm::solver::contact {
+
+namespace {
+
+V3 node_x(const NodalState& n, Index i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {n.x.x[k], n.x.y[k], n.x.z[k]};
+}
+V3 node_v(const NodalState& n, Index i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {n.v.x[k], n.v.y[k], n.v.z[k]};
+}
+void add_force(NodalState& n, Index i, V3 f) {
+  const auto k = static_cast<std::size_t>(i);
+  n.force.x[k] += f.x;
+  n.force.y[k] += f.y;
+  n.force.z[k] += f.z;
+}
+
+std::array<V3, 4> corners(const NodalState& n, const std::array<Index, 4>& s) {
+  return {node_x(n, s[0]), node_x(n, s[1]), node_x(n, s[2]), node_x(n, s[3])};
+}
+
+// Istf 2..5: combination of main and secondary stiffness (Radioss TYPE7 Istf).
+double combine(int istf, double km, double ks) {
+  switch (istf) {
+    case 2: return 0.5 * (km + ks);
+    case 3: return std::max(km, ks);
+    case 4: return std::min(km, ks);
+    default: return (km + ks) > 0 ? km * ks / (km + ks) : 0.0;
+  }
+}
+
+}  // namespace
+
+double PenaltyContact::law_force(double p, double g, double kp, double kmax, bool linear) {
+  if (p <= 0) return 0;
+  if (linear || g <= 0) return std::min(kp, kmax) * p;
+  // K(p) = kp g/(g-p) reaches kmax at p* = g (1 - kp/kmax).
+  const double ps = kmax > kp ? g * (1 - kp / kmax) : 0.0;
+  if (p < ps) return kp * g * p / (g - p);
+  return kmax * p;
+}
+
+double PenaltyContact::law_energy(double p, double g, double kp, double kmax, bool linear) {
+  if (p <= 0) return 0;
+  if (linear || g <= 0) return 0.5 * std::min(kp, kmax) * p * p;
+  const double ps = kmax > kp ? g * (1 - kp / kmax) : 0.0;
+  // U(p) = kp g (-p - g ln(1 - p/g)) below p*, then the linear branch F = kmax p.
+  auto u = [&](double q) { return kp * g * (-q - g * std::log1p(-q / g)); };
+  if (p < ps) return u(p);
+  return u(ps) + 0.5 * kmax * (p * p - ps * ps);
+}
+
+PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary,
+                               PenaltyContactParams p, const NodalState& nodes,
+                               std::vector<double> node_gap, std::vector<double> node_k0)
+    : surf_(std::move(main)), secondary_(std::move(secondary)), p_(p),
+      node_gap_(std::move(node_gap)), node_k0_(std::move(node_k0)) {
+  const std::size_t ns = secondary_.size();
+  tangential_.assign(ns, V3{});
+  prev_force_.assign(ns, V3{});
+  prev_segment_.assign(ns, kNoIndex);
+  prev_weight_.assign(ns, {0, 0, 0, 0});
+  pair_friction_stored_.assign(ns, 0.0);
+
+  // Margin: half the mean segment edge unless given.
+  double edge_sum = 0;
+  std::size_t n_edges = 0;
+  for (const auto& s : surf_.nodes) {
+    const std::array<V3, 4> c = corners(nodes, s);
+    for (int k = 0; k < 4; ++k) {
+      const double l = norm(c[static_cast<std::size_t>((k + 1) & 3)] - c[static_cast<std::size_t>(k)]);
+      if (l > 0) edge_sum += l, ++n_edges;
+    }
+  }
+  const double mean_edge = n_edges ? edge_sum / static_cast<double>(n_edges) : 1.0;
+  margin_ = p_.margin > 0 ? p_.margin : 0.5 * mean_edge;
+
+  // Largest gap any pair can have (box inflation).
+  max_gap_ = p_.gapmin;
+  if (p_.igap >= 1) {
+    double tm = 0, gs = 0;
+    for (double t : surf_.thickness) tm = std::max(tm, t);
+    for (double g : node_gap_) gs = std::max(gs, g);
+    double g = p_.gap_scale * (0.5 * tm + gs);
+    if (p_.gapmax > 0) g = std::min(g, p_.gapmax);
+    max_gap_ = std::max(max_gap_, g);
+  }
+
+  // Fixed-step stiffness cap per secondary node.
+  k_cap_.assign(ns, std::numeric_limits<double>::infinity());
+  if (p_.fixed_dt > 0) {
+    const double r = p_.tsca / p_.fixed_dt;
+    for (std::size_t i = 0; i < ns; ++i) {
+      const double m = nodes.mass0[static_cast<std::size_t>(secondary_[i])];
+      k_cap_[i] = 2.0 * p_.cap_fraction * m * r * r;
+    }
+  }
+
+  // Exclusions: segments containing the node, and segments sharing a node with those.
+  std::vector<std::vector<Index>> node_segs(nodes.n_nodes);
+  for (std::size_t s = 0; s < surf_.size(); ++s)
+    for (int k = 0; k < (surf_.is_triangle(s) ? 3 : 4); ++k)
+      node_segs[static_cast<std::size_t>(surf_.nodes[s][static_cast<std::size_t>(k)])].push_back(static_cast<Index>(s));
+  excl_start_.assign(ns + 1, 0);
+  std::vector<Index> tmp;
+  for (std::size_t i = 0; i < ns; ++i) {
+    tmp.clear();
+    for (Index s : node_segs[static_cast<std::size_t>(secondary_[i])]) {
+      tmp.push_back(s);
+      for (Index n : surf_.nodes[static_cast<std::size_t>(s)])
+        for (Index s2 : node_segs[static_cast<std::size_t>(n)]) tmp.push_back(s2);
+    }
+    std::sort(tmp.begin(), tmp.end());
+    tmp.erase(std::unique(tmp.begin(), tmp.end()), tmp.end());
+    excl_seg_.insert(excl_seg_.end(), tmp.begin(), tmp.end());
+    excl_start_[i + 1] = static_cast<std::uint32_t>(excl_seg_.size());
+  }
+
+  // Tracked nodes: secondary and main, each once.
+  std::vector<std::uint8_t> mark(nodes.n_nodes, 0);
+  for (Index i : secondary_) mark[static_cast<std::size_t>(i)] = 1;
+  for (const auto& s : surf_.nodes)
+    for (Index i : s) mark[static_cast<std::size_t>(i)] = 1;
+  for (std::size_t i = 0; i < nodes.n_nodes; ++i)
+    if (mark[i]) tracked_.push_back(static_cast<Index>(i));
+  sort(nodes);
+}
+
+double PenaltyContact::gap_of_pair(std::size_t slot, Index seg) const {
+  if (p_.igap == 0) return p_.gapmin;
+  const double gs = node_gap_.empty() ? 0.0 : node_gap_[slot];
+  double g = p_.gap_scale * (0.5 * surf_.thickness[static_cast<std::size_t>(seg)] + gs);
+  if (p_.gapmax > 0) g = std::min(g, p_.gapmax);
+  return std::max(g, p_.gapmin);
+}
+
+bool PenaltyContact::needs_sort(const NodalState& nodes) const {
+  // Relative motion of a node and a segment is at most twice the largest displacement.
+  const double limit2 = 0.25 * margin_ * margin_;
+  for (std::size_t k = 0; k < tracked_.size(); ++k) {
+    const auto i = static_cast<std::size_t>(tracked_[k]);
+    const double dx = nodes.x.x[i] - sort_x_[k], dy = nodes.x.y[i] - sort_y_[k],
+                 dz = nodes.x.z[i] - sort_z_[k];
+    if (dx * dx + dy * dy + dz * dz > limit2) return true;
+  }
+  return false;
+}
+
+void PenaltyContact::sort(const NodalState& nodes) {
+  ++n_sorts_;
+  const double inflate = max_gap_ + margin_;
+  boxes_.resize(surf_.size());
+  double size_sum = 0;
+  for (std::size_t s = 0; s < surf_.size(); ++s) {
+    const std::array<V3, 4> c = corners(nodes, surf_.nodes[s]);
+    Box b{c[0], c[0]};
+    for (const V3& q : c) {
+      b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y), std::min(b.lo.z, q.z)};
+      b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y), std::max(b.hi.z, q.z)};
+    }
+    // One-sided faces also catch nodes that went past them, down to `depth`.
+    const double grow = inflate + (surf_.one_sided[s] ? surf_.depth[s] : 0.0);
+    b.lo -= V3{grow, grow, grow};
+    b.hi += V3{grow, grow, grow};
+    size_sum += (b.hi.x - b.lo.x + b.hi.y - b.lo.y + b.hi.z - b.lo.z) / 3.0;
+    boxes_[s] = b;
+  }
+  grid_.build(boxes_, surf_.size() ? size_sum / static_cast<double>(surf_.size()) : 1.0);
+  cand_start_.assign(secondary_.size() + 1, 0);
+  cand_segment_.clear();
+  std::vector<Index> found;
+  for (std::size_t i = 0; i < secondary_.size(); ++i) {
+    found.clear();
+    grid_.for_each_containing(node_x(nodes, secondary_[i]), boxes_, [&](Index s) {
+      const auto b = excl_seg_.begin() + excl_start_[i], e = excl_seg_.begin() + excl_start_[i + 1];
+      if (!std::binary_search(b, e, s)) found.push_back(s);
+    });
+    std::sort(found.begin(), found.end());  // deterministic order
+    cand_segment_.insert(cand_segment_.end(), found.begin(), found.end());
+    cand_start_[i + 1] = static_cast<std::uint32_t>(cand_segment_.size());
+  }
+  sort_x_.resize(tracked_.size());
+  sort_y_.resize(tracked_.size());
+  sort_z_.resize(tracked_.size());
+  for (std::size_t k = 0; k < tracked_.size(); ++k) {
+    const auto i = static_cast<std::size_t>(tracked_[k]);
+    sort_x_[k] = nodes.x.x[i];
+    sort_y_[k] = nodes.x.y[i];
+    sort_z_[k] = nodes.x.z[i];
+  }
+}
+
+double PenaltyContact::pair_power(const NodalState& nodes, std::size_t i, V3 f, Index seg,
+                                  const std::array<double, 4>& w) const {
+  if (seg == kNoIndex) return 0.0;
+  V3 vc{};
+  const auto& sg = surf_.nodes[static_cast<std::size_t>(seg)];
+  for (std::size_t k = 0; k < 4; ++k) vc += w[k] * node_v(nodes, sg[k]);
+  return dot(f, node_v(nodes, secondary_[i]) - vc);
+}
+
+void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
+  resultant_ = {};
+  elastic_energy_ = 0;
+  // Work of last cycle's forces over v^{n-1/2} (first half of the trapezoid).
+  double power_prev = 0;
+  for (std::size_t i = 0; i < secondary_.size(); ++i)
+    power_prev += pair_power(nodes, i, prev_force_[i], prev_segment_[i], prev_weight_[i]);
+  double power_now = 0;
+  if (time < p_.tstart || time > p_.tstop) {
+    std::fill(tangential_.begin(), tangential_.end(), V3{});
+    std::fill(prev_segment_.begin(), prev_segment_.end(), kNoIndex);
+    friction_dissipated_ += friction_stored_;
+    friction_stored_ = 0;
+    work_ += 0.5 * dt * power_prev;
+    return;
+  }
+  if (needs_sort(nodes)) sort(nodes);
+  friction_stored_ = 0;
+  const double mu = p_.fric;
+
+  for (std::size_t i = 0; i < secondary_.size(); ++i) {
+    const Index sn = secondary_[i];
+    const V3 xs = node_x(nodes, sn);
+    // Closest in-contact candidate.
+    Index best_seg = kNoIndex;
+    SegmentProjection best{};
+    double best_abs = 0, best_pen = 0, best_gap = 0;
+    V3 best_n{};
+    for (std::uint32_t k = cand_start_[i]; k < cand_start_[i + 1]; ++k) {
+      const Index seg = cand_segment_[k];
+      const auto su = static_cast<std::size_t>(seg);
+      const SegmentProjection pr = project_on_segment(xs, corners(nodes, surf_.nodes[su]), surf_.is_triangle(su));
+      const double g = gap_of_pair(i, seg);
+      const V3 d = xs - pr.point;
+      double signed_d = pr.distance;
+      V3 n{};
+      if (surf_.one_sided[su]) {
+        const double side = dot(d, pr.normal);
+        if (side < 0) {
+          // Past the face: only a node over the face's interior, not too deep, counts.
+          if (!pr.interior || pr.distance > surf_.depth[su]) continue;
+          signed_d = -pr.distance;
+          n = pr.normal;
+        } else {
+          n = pr.distance > 1e-12 * (g + margin_) ? (1.0 / pr.distance) * d : pr.normal;
+        }
+      } else {
+        // Two-sided shell: push away from the mid-surface on the node's side.
+        if (pr.distance > 1e-12 * (g + margin_)) n = (1.0 / pr.distance) * d;
+        else n = pr.normal;
+      }
+      const double pen = g - signed_d;
+      if (pen <= 0) continue;
+      if (best_seg == kNoIndex || std::abs(signed_d) < best_abs) {
+        best_seg = seg;
+        best = pr;
+        best_abs = std::abs(signed_d);
+        best_pen = pen;
+        best_gap = g;
+        best_n = n;
+      }
+    }
+    if (best_seg == kNoIndex) {
+      // Released: what the tangential spring held is lost to friction.
+      friction_dissipated_ += pair_friction_stored_[i];
+      pair_friction_stored_[i] = 0;
+      tangential_[i] = {};
+      prev_segment_[i] = kNoIndex;
+      continue;
+    }
+    const auto su = static_cast<std::size_t>(best_seg);
+    const std::array<Index, 4>& sg = surf_.nodes[su];
+    const int nn = surf_.is_triangle(su) ? 3 : 4;
+
+    // Stiffness.
+    double km = surf_.k0[su];
+    double kp;
+    if (p_.istf == 1) kp = p_.stfac;
+    else if (p_.istf >= 2 && !node_k0_.empty()) kp = p_.stfac * combine(p_.istf, km, node_k0_[i]);
+    else kp = p_.stfac * km;
+    if (p_.stmin > 0) kp = std::max(kp, p_.stmin);
+    double kmax = k_cap_[i];
+    if (p_.stmax > 0) kmax = std::min(kmax, p_.stmax);
+    if (!std::isfinite(kmax)) kmax = 100.0 * kp;
+    kp = std::min(kp, kmax);
+    const bool linear = surf_.one_sided[su] != 0;
+    const double fn_el = law_force(best_pen, best_gap, kp, kmax, linear);
+    elastic_energy_ += law_energy(best_pen, best_gap, kp, kmax, linear);
+    const double k_now = best_pen > 0 ? fn_el / best_pen : kp;
+
+    // Relative velocity of the node and the contact point.
+    V3 vm{};
+    double mm = 0;
+    for (int k = 0; k < nn; ++k) {
+      const double w = best.weight[static_cast<std::size_t>(k)];
+      vm += w * node_v(nodes, sg[static_cast<std::size_t>(k)]);
+      mm += w * nodes.mass[static_cast<std::size_t>(sg[static_cast<std::size_t>(k)])];
+    }
+    const double ms = nodes.mass[static_cast<std::size_t>(sn)];
+    const V3 vrel = node_v(nodes, sn) - vm;
+    const double vn = dot(vrel, best_n);
+    const double m_red = (ms + mm) > 0 ? ms * mm / (ms + mm) : ms;
+    double fd = -2.0 * p_.vis_s * std::sqrt(k_now * m_red) * vn;
+    double fn = fn_el + fd;
+    if (fn < 0) {  // never pull: limit the damping part
+      fd = -fn_el;
+      fn = 0;
+    }
+    damping_dissipated_ += -fd * vn * dt;
+
+    // Friction: elastic-plastic tangential spring of stiffness k_now.
+    V3 ft{};
+    if (mu > 0) {
+      V3 t = tangential_[i];
+      t -= dot(t, best_n) * best_n;  // keep it in the current tangent plane
+      const V3 vt = vrel - vn * best_n;
+      t -= (k_now * dt) * vt;
+      const double tn = norm(t), limit = mu * fn;
+      if (tn > limit) {
+        // Slip: the excess of the trial force is plastic slip (tn - limit)/k dissipated at mu*Fn.
+        friction_dissipated_ += limit * (tn - limit) / k_now;
+        t = tn > 0 ? (limit / tn) * t : V3{};
+      }
+      tangential_[i] = t;
+      const double stored = dot(t, t) / (2.0 * k_now);
+      friction_stored_ += stored;
+      pair_friction_stored_[i] = stored;
+      ft = t;
+    }
+
+    const V3 f = fn * best_n + ft;
+    add_force(nodes, sn, f);
+    nodes.stiffness[static_cast<std::size_t>(sn)] += k_now;
+    for (int k = 0; k < nn; ++k) {
+      const double w = best.weight[static_cast<std::size_t>(k)];
+      const Index m = sg[static_cast<std::size_t>(k)];
+      add_force(nodes, m, -w * f);
+      nodes.stiffness[static_cast<std::size_t>(m)] += w * k_now;
+    }
+    prev_force_[i] = f;
+    prev_segment_[i] = best_seg;
+    prev_weight_[i] = best.weight;
+    if (nn == 3) prev_weight_[i][3] = 0;
+    power_now += pair_power(nodes, i, f, best_seg, prev_weight_[i]);
+    resultant_.normal_force += fn * best_n;
+    resultant_.tangential_force += ft;
+    ++resultant_.n_active;
+  }
+  work_ += 0.5 * dt * (power_prev + power_now);
+}
+
+}  // namespace hbm::solver::contact

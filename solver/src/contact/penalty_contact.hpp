@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// /INTER/TYPE7 penalty node-to-surface contact: secondary nodes against the segments of
+// a main surface, self-contact when the nodes belong to that surface.
+//
+// Per cycle, for each secondary node s, the closest candidate segment with a positive
+// penetration p = gap - d is found (d: distance to the closest point; signed along the
+// outward normal for solid faces, which lets a node that went past the face still be
+// pushed out, down to `depth`). Normal force (Radioss TYPE7 law, stiffness rising as the
+// node approaches a shell mid-surface): K(p) = Kp g / (g - p), capped at Kmax, F = K p;
+// solid faces use the linear law F = Kp p. Kp = Stfac K0 (Istf=0) or Stfac (Istf=1)
+// or K0 combined with the secondary side (Istf 2-5), bounded by Stmin/Stmax and by the
+// fixed-step cap Kcap = 2 f m_s (Tsca/dt)^2 so that the contact alone never pulls the
+// node's nodal step dt_n = Tsca sqrt(2 m / k) under the fixed step (f = cap fraction).
+// Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
+// mass of node and segment; the total normal force is kept compressive. Coulomb friction
+// (Fric) by a regularised stick-slip (elastic-plastic tangential spring): F_t += -K v_t dt,
+// |F_t| <= mu F_n. The force on s is F; the segment nodes get -N_i F (N_i: weights at the
+// closest point), so linear momentum is exchanged exactly.
+//
+// Search: candidate (node, segment) pairs within gap + margin are collected with a
+// bucket grid at a sort; the list stays valid while every node involved moved less than
+// half the margin since that sort (relative motion < margin), tracked each cycle.
+#pragma once
+
+#include "bucket_grid.hpp"
+#include "contact_surface.hpp"
+#include "hbm/solver/nodal_state.hpp"
+#include "vec3.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace hbm::solver::contact {
+
+struct PenaltyContactParams {
+  int istf = 0;            // 0: Kp = Stfac K0 (main side), 1: Kp = Stfac, 2..5: K0 of both
+                           //   sides combined (2 mean, 3 max, 4 min, 5 in series)
+  double stfac = 1.0;      // stiffness scale factor (Istf != 1) or stiffness (Istf = 1)
+  double stmin = 0.0;      // lower bound on Kp (0: none) [force/length]
+  double stmax = 0.0;      // upper bound on K (0: none) [force/length]
+  double fric = 0.0;       // Coulomb coefficient
+  int igap = 0;            // 0: constant gap = gapmin; 1: variable gap from thicknesses
+  double gapmin = 0.0;     // [length]
+  double gap_scale = 1.0;  // Fscalegap (Igap 1)
+  double gapmax = 0.0;     // upper bound on the variable gap (0: none) [length]
+  double tstart = 0.0, tstop = std::numeric_limits<double>::infinity();  // [time]
+  double vis_s = 0.05;     // normal damping, fraction of critical
+  double fixed_dt = 0.0;   // fixed engine step (/DT/NODA/CST Tmin), 0: no cap [time]
+  double tsca = 0.9;       // /DT/NODA/CST Tsca
+  double cap_fraction = 0.5;  // share of the nodal stiffness budget the contact may take
+  double margin = 0.0;     // search margin (0: half the mean segment edge) [length]
+};
+
+// Global results of one interface this cycle (time histories, listing).
+struct ContactResultant {
+  V3 normal_force;        // sum of normal forces on the secondary nodes [force]
+  V3 tangential_force;    // sum of friction forces on the secondary nodes [force]
+  int n_active = 0;       // secondary nodes in contact
+};
+
+class PenaltyContact {
+ public:
+  // `secondary`: node indices; `node_gap`: per-node secondary gap gs (Igap 1: half the
+  // thickest shell at the node, empty otherwise); `node_k0`: per-node secondary stiffness
+  // (Istf 2..5, empty otherwise).
+  PenaltyContact(ContactSurface main, std::vector<Index> secondary, PenaltyContactParams p,
+                 const NodalState& nodes, std::vector<double> node_gap = {},
+                 std::vector<double> node_k0 = {});
+
+  // Adds contact forces to nodes.force (nodes.force_ext is left alone: contact forces
+  // are internal to the model) and contact stiffness to nodes.stiffness. Positions x^n,
+  // velocities v^{n-1/2}; dt_prev = t^n - t^{n-1}, the step v^{n-1/2} acted over (0 at
+  // the first cycle): friction slip and dissipation use v^{n-1/2} dt_prev.
+  void add_forces(NodalState& nodes, double time, double dt_prev);
+
+  // Cumulative work of the contact forces on the nodes through t^n, trapezoidal:
+  // W += 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt_prev (per pair: f . (v_s - sum N_i v_i)).
+  // In a conservative contact -W equals energy() up to the scheme's O(dt^2) error.
+  double work() const { return work_; }
+
+  // Energies [energy]: elastic (stored in the penalty springs now), friction (stored in
+  // the tangential springs + dissipated so far), damping (dissipated so far).
+  double elastic_energy() const { return elastic_energy_; }
+  double friction_energy() const { return friction_stored_ + friction_dissipated_; }
+  double damping_energy() const { return damping_dissipated_; }
+  double energy() const { return elastic_energy() + friction_energy() + damping_energy(); }
+  const ContactResultant& resultant() const { return resultant_; }
+
+  // Search statistics (bench, tests).
+  std::size_t n_sorts() const { return n_sorts_; }
+  std::size_t n_candidates() const { return cand_segment_.size(); }
+  std::size_t n_secondary() const { return secondary_.size(); }
+  double margin() const { return margin_; }
+  double gap_of_pair(std::size_t secondary_slot, Index segment) const;
+  const ContactSurface& surface() const { return surf_; }
+
+  // Penalty law (exposed for tests): force and potential at penetration p, gap g.
+  static double law_force(double p, double g, double kp, double kmax, bool linear);
+  static double law_energy(double p, double g, double kp, double kmax, bool linear);
+
+ private:
+  void sort(const NodalState& nodes);
+  bool needs_sort(const NodalState& nodes) const;
+  double pair_power(const NodalState& nodes, std::size_t slot, V3 f, Index seg,
+                    const std::array<double, 4>& w) const;
+
+  ContactSurface surf_;
+  std::vector<Index> secondary_;
+  PenaltyContactParams p_;
+  std::vector<double> node_gap_, node_k0_;
+  std::vector<double> k_cap_;          // per secondary node [force/length]
+  double margin_ = 0;
+  double max_gap_ = 0;
+
+  // Self-contact exclusion: per secondary node, the segments it must never hit (its own
+  // segments and their edge/corner neighbours), CSR sorted.
+  std::vector<std::uint32_t> excl_start_;
+  std::vector<Index> excl_seg_;
+
+  // Candidates (CSR over secondary nodes) and the positions of all tracked nodes at the
+  // last sort.
+  std::vector<std::uint32_t> cand_start_;
+  std::vector<Index> cand_segment_;
+  std::vector<Index> tracked_;
+  std::vector<double> sort_x_, sort_y_, sort_z_;
+  BucketGrid grid_;
+  std::vector<Box> boxes_;
+  std::size_t n_sorts_ = 0;
+
+  // Friction state per secondary node.
+  std::vector<V3> tangential_;
+  std::vector<double> pair_friction_stored_;
+
+  double elastic_energy_ = 0, friction_stored_ = 0, friction_dissipated_ = 0;
+  double damping_dissipated_ = 0;
+  double work_ = 0;
+  ContactResultant resultant_;
+
+  // Last cycle's force on each secondary node, its segment and weights (work update).
+  std::vector<V3> prev_force_;
+  std::vector<Index> prev_segment_;
+  std::vector<std::array<double, 4>> prev_weight_;
+};
+
+}  // namespace hbm::solver::contact
