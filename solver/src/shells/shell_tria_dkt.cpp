@@ -80,6 +80,9 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, d
       X[i][0] = nv.x[n]; X[i][1] = nv.y[n]; X[i][2] = nv.z[n];
       V[i][0] = nv.vx[n]; V[i][1] = nv.vy[n]; V[i][2] = nv.vz[n];
       W[i][0] = nv.wx[n]; W[i][1] = nv.wy[n]; W[i][2] = nv.wz[n];
+      // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: the velocity gradient of a
+      // rigid rotation is then skew (Cayley transform), so rotations strain nothing.
+      for (int k = 0; k < 3; ++k) X[i][k] -= 0.5 * dt * V[i][k];
     }
     double r21[3], r31[3], ex[3], ey[3], ez[3];
     for (int k = 0; k < 3; ++k) {
