@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// /RBODY: a rigid body made of a main node (moved to the centre of mass) and the nodes of
+// a secondary node group, as a Constraint of the explicit cycle (constraint.hpp):
+//   1. gather_forces: the forces, moments and nodal stiffness of the secondaries are
+//      moved to the main node (moment of each force about the main node included) and
+//      zeroed on the secondaries; the resultant is kept for /TH/RBODY.
+//   2. impose_velocities: translation is the core's velocity update of the main node
+//      (its mass is the body mass). Rotation: the spatial angular momentum is kicked,
+//      L^{n+1/2} = L^{n-1/2} + dt^n M^n, and the orientation Q (principal frame ->
+//      global) advanced over dt^{n+1/2} by the symplectic free-rigid-body splitting of
+//      Dullweber, Leimkuhler & McLachlan (1997), see rigid_rotation.hpp; the main node
+//      omega is set to the rotation vector of Q^{n+1} Q^{n,T} / dt^{n+1/2}.
+//   3. impose_dependent: each secondary gets v_s = (x_m^{n+1} + Q^{n+1} r_s - x_s^n) / dt,
+//      so that the core's position update puts it exactly on the rigid configuration
+//      (v_s = v_m + omega x r to first order, without the O(dt^2) radial growth of that
+//      formula); omega_s = omega_m. If a later constraint (/BCS) changed the main node
+//      omega in stage 2, the rotation follows that omega (exponential map) instead.
+// Kick-drift with an exact free flow is a symplectic, momentum-conserving integrator:
+// a free tumbling body keeps L to round-off and its energy without drift.
+// /TH/RBODY variables: FX FY FZ MX MY MZ (resultant force and moment about the centre
+// at t^n, global axes; the Radioss default set), and VX VY VZ, WX WY WZ (velocity of the
+// centre and angular velocity, half step), AMX AMY AMZ (angular momentum about the
+// centre), KE (kinetic energy, translation + rotation).
+#pragma once
+
+#include "hbm/solver/constraint.hpp"
+#include "rigid/rigid_mass_properties.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace hbm::solver::rigid {
+
+class RigidBody final : public Constraint {
+ public:
+  std::int64_t id = 0;
+  std::string title;
+  Index main = kNoIndex;
+  std::vector<Index> secondary;
+  std::vector<Eigen::Vector3d> r_body;  // secondary offsets in the principal frame [length]
+  double mass = 0;                      // physical body mass [mass]
+  Eigen::Vector3d principal = Eigen::Vector3d::Ones();  // principal moments [mass*length^2]
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();      // principal frame -> global, at t^n
+  Eigen::Vector3d L = Eigen::Vector3d::Zero();          // spatial angular momentum (half step)
+
+  // Build the body from the current nodal masses / positions (main node moved to the
+  // centre, its mass0 and inertia0 set, secondaries flagged). Throws
+  // std::invalid_argument with the reason if the body is degenerate.
+  void assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& added_inertia,
+                bool include_main_in_centre, bool spherical);
+
+  std::string_view kind() const override { return "/RBODY"; }
+  std::int64_t user_id() const override { return id; }
+  void gather_forces(const StepContext& step, NodalState& nodes) override;
+  void impose_velocities(const StepContext& step, NodalState& nodes) override;
+  void impose_dependent(const StepContext& step, NodalState& nodes) override;
+
+  std::optional<ThProbe> th_probe(ThKind kind, std::int64_t id,
+                                  std::string_view variable) const override;
+  std::vector<std::string> th_default_variables(ThKind kind) const override;
+  bool owns_th_object(ThKind kind, std::int64_t id) const override;
+
+  // Current diagnostics (also what the probes read).
+  Eigen::Vector3d force() const { return force_; }
+  Eigen::Vector3d moment() const { return moment_; }
+  Eigen::Vector3d velocity() const { return velocity_; }
+  Eigen::Vector3d omega() const { return omega_; }
+  double kinetic_energy() const;
+  Eigen::Vector3d inverse_inertia(const NodalState& nodes) const;
+
+ private:
+  void initialise(const NodalState& nodes, NodalState& out);
+  bool initialised_ = false;
+  Eigen::Matrix3d Q_next_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d omega_written_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_ = Eigen::Vector3d::Zero(), moment_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero(), omega_ = Eigen::Vector3d::Zero();
+  double mass_used_ = 0;
+  Eigen::Vector3d inv_inertia_used_ = Eigen::Vector3d::Ones();
+  std::int64_t steps_since_orthonormalize_ = 0;
+};
+
+}  // namespace hbm::solver::rigid
