@@ -23,6 +23,7 @@ struct ShellHarness {
   std::vector<std::array<double, 6>> f;      // assembled force/moment on nodes
   std::vector<std::array<double, 6>> fext;   // external loads
   std::vector<std::array<std::uint8_t, 6>> fixed;
+  std::vector<std::array<double, 6>> reaction;  // reaction on prescribed DOFs, last step
   ShellGroupData g;
   double time = 0, dt_last = 0;
   double w_ext = 0;       // external work (loads + reactions of prescribed DOFs)
@@ -31,7 +32,7 @@ struct ShellHarness {
   int add_node(double px, double py, double pz) {
     x.push_back(px); y.push_back(py); z.push_back(pz);
     for (auto* a : {&vx, &vy, &vz, &wx, &wy, &wz, &m, &I}) a->push_back(0.0);
-    f.push_back({}); fext.push_back({}); fixed.push_back({});
+    f.push_back({}); fext.push_back({}); fixed.push_back({}); reaction.push_back({});
     return static_cast<int>(nn++);
   }
   void add_element(std::initializer_list<int> nodes, double t, std::int64_t id = 0) {
@@ -125,6 +126,7 @@ struct ShellHarness {
           // Reaction R with m (vnew - v)/dt = ftot + R; its work R * vmid * dt.
           const double R = mass * (vnew - v) / dt - ftot;
           w_ext += (R + fext[n][c]) * 0.5 * (v + vnew) * dt;
+          reaction[n][c] = R;
           v = vnew;
         } else {
           const double vold = v;
