@@ -48,6 +48,8 @@ struct Card {
   std::size_t n_fixed_lines() const;        // lines present among spec->lines
   std::size_t n_rows() const;               // repeated rows
   const Row& row(std::size_t i) const;      // i-th repeated row
+  std::size_t n_name_rows() const;          // name lines of /TH/* cards (variable lists)
+  const Row& name_row(std::size_t i) const; // i-th name line
 
   // Field access by name on a line (fixed line index or row). Throws std::out_of_range
   // naming the keyword and field if the layout has no such field (a programming error).

@@ -37,6 +37,10 @@ ReadResult read_deck(const std::filesystem::path& path, Section section);
 // Same, from text already in memory (`name` is used in messages).
 ReadResult read_deck_text(std::string_view text, std::string name, Section section);
 
+// Checks a deck built in memory (CardBuilder): the same model checks as read_deck plus
+// the field ranges; locations are those of the cards (none for generated cards).
+std::vector<Diagnostic> check_deck(const Deck& deck);
+
 // Format one diagnostic with its include chain; format all, one per line.
 std::string format(const Diagnostic& d, const Deck& deck);
 void print_diagnostics(std::ostream& os, const ReadResult& r);
@@ -57,6 +61,9 @@ class CardBuilder {
   CardBuilder& set_int(std::size_t fixed_line, std::string_view field, std::int64_t v);
   CardBuilder& set_text(std::size_t fixed_line, std::string_view field, std::string_view v);
   std::size_t add_row();  // returns the row index
+  // Name lines of /TH/* cards (var1..var10), added before any data row.
+  std::size_t add_name_row();
+  CardBuilder& name_row_set_text(std::size_t row, std::string_view field, std::string_view v);
   CardBuilder& row_set(std::size_t row, std::string_view field, double v);
   CardBuilder& row_set_int(std::size_t row, std::string_view field, std::int64_t v);
   CardBuilder& row_set_text(std::size_t row, std::string_view field, std::string_view v);

@@ -53,6 +53,7 @@ struct FieldSpec {
 struct LineSpec {
   std::string_view name;             // e.g. "line 1", "node", "element"
   std::vector<FieldSpec> fields;
+  bool optional = false;             // a fixed line that may be absent (defaults apply)
 };
 
 enum class IdKind : std::uint8_t {
@@ -70,12 +71,19 @@ struct KeywordSpec {
   std::vector<LineSpec> lines;   // fixed data lines, in order
   std::optional<LineSpec> rows;  // repeated data lines until the next keyword
   std::string_view meaning;      // one line, for docs/deck-format.md
+  // Repeated name lines before `rows` (the variable lists of /TH/* cards). A data line
+  // belongs here while its first non-blank character is a letter.
+  std::optional<LineSpec> name_rows;
 };
 
 // All supported keywords (starter and engine). A keyword not in this table is an error.
 const std::vector<KeywordSpec>& keyword_table();
 // Exact match on the keyword without id ("/MAT/LAW1"), nullptr if unsupported.
 const KeywordSpec* find_keyword(std::string_view keyword, Section section);
+// Exact match in either section (starter first).
+const KeywordSpec* find_keyword_any(std::string_view keyword);
+// Index of a field in a line layout by name (case-insensitive), -1 if absent.
+int field_index(const LineSpec& line, std::string_view field);
 // Nearest supported keyword (edit distance), for "did you mean" messages.
 std::string_view nearest_keyword(std::string_view keyword, Section section);
 
