@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// TYPE7 penalty kernel on point masses, against closed-form solutions:
+// - a node bouncing on a fixed face: penalty spring of stiffness K, so the overshoot
+//   past the gap is v0 sqrt(m/K), the contact lasts pi sqrt(m/K), the rebound speed is
+//   v0 and the contact energy returns to 0 (central difference, omega dt = 3e-3: the
+//   errors are O((omega dt)^2) ~ 1e-5, tolerances 1e-3 relative);
+// - a node hitting a free segment: 1-D elastic collision (momentum to round-off, final
+//   velocities (m1-m2)/(m1+m2) v0 and 2 m1/(m1+m2) v0);
+// - Coulomb friction: sliding under a constant normal load decelerates at mu g;
+// - self-contact of a folded strip: no force from a node's own or neighbouring
+//   segments, opposite layers pushed apart with zero resultant;
+// - search: no re-sort before some node moved half the margin, re-sort after;
+// - fixed-step stiffness cap, Tstart/Tstop, gap from thickness (Igap 1).
+#include "contact/penalty_contact.hpp"
+#include "contact_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace hbm::solver;
+using namespace hbm::solver::contact;
+using namespace hbm::solver::contact::testing;
+
+namespace {
+
+// A flat quad z = 0, side 2 L centred on the origin, with given nodal masses.
+ContactSurface flat_quad(NodalState& n, double L, double m, double k0, bool one_sided,
+                         double thickness = 0) {
+  ContactSurface s;
+  const Index a = add_node(n, {-L, -L, 0}, m), b = add_node(n, {L, -L, 0}, m),
+              c = add_node(n, {L, L, 0}, m), d = add_node(n, {-L, L, 0}, m);
+  s.nodes.push_back({a, b, c, d});
+  s.k0.push_back(k0);
+  s.thickness.push_back(thickness);
+  s.one_sided.push_back(one_sided ? 1 : 0);
+  s.depth.push_back(L);
+  return s;
+}
+
+}  // namespace
+
+TEST(ContactPenalty, BounceOnFixedFaceMatchesSpringSolution) {
+  NodalState n;
+  const double m = 1e-3, K = 100, v0 = 1.0, gap = 0.1, dt = 1e-5;
+  ContactSurface s = flat_quad(n, 1.0, 1.0, K, true);
+  const Index node = add_node(n, {0.1, 0.2, 0.3}, m, {0, 0, -v0});
+  std::vector<std::uint8_t> fixed(n.n_nodes, 0);
+  for (int i = 0; i < 4; ++i) fixed[i] = 1;
+  PenaltyContactParams p;
+  p.gapmin = gap;
+  p.vis_s = 0;
+  PenaltyContact c(s, {node}, p, n);
+  double t = 0, zmin = 1e9, t_in = -1, t_out = -1;
+  const double e0 = kinetic(n);
+  for (int k = 0; k < 60000 && t_out < 0; ++k) {
+    step(n, dt, [&](NodalState& s2) { c.add_forces(s2, t, dt); }, fixed);
+    t += dt;
+    zmin = std::min(zmin, n.x.z[node]);
+    if (t_in < 0 && c.resultant().n_active > 0) t_in = t;
+    if (t_in > 0 && t_out < 0 && c.resultant().n_active == 0) t_out = t;
+  }
+  const double omega = std::sqrt(K / m);
+  EXPECT_NEAR(gap - zmin, v0 / omega, 1e-3 * v0 / omega);
+  EXPECT_NEAR(t_out - t_in, M_PI / omega, 2 * dt + 1e-3 * M_PI / omega);
+  EXPECT_NEAR(n.v.z[node], v0, 1e-3 * v0);
+  EXPECT_NEAR(n.v.x[node], 0.0, 1e-12);
+  EXPECT_NEAR(-c.work(), 0.0, 1e-3 * e0);  // energy given back
+  EXPECT_NEAR(kinetic(n), e0, 1e-3 * e0);
+}
+
+TEST(ContactPenalty, ElasticCollisionWithFreeSegment) {
+  NodalState n;
+  const double m1 = 1.0, m2 = 2.0, v0 = 2.0, dt = 1e-4;
+  ContactSurface s = flat_quad(n, 1.0, m2 / 4, 1e3, false);
+  const Index node = add_node(n, {0, 0, 0.5}, m1, {0, 0, -v0});
+  PenaltyContactParams p;
+  p.gapmin = 0.2;
+  p.vis_s = 0;
+  p.stmax = 1e3;  // linear-like: K(p) from the shell law is capped, both are conservative
+  PenaltyContact c(s, {node}, p, n);
+  const auto p0 = momentum(n);
+  const double e0 = kinetic(n);
+  double t = 0;
+  for (int k = 0; k < 20000; ++k) {
+    step(n, dt, [&](NodalState& s2) { c.add_forces(s2, t, dt); });
+    t += dt;
+  }
+  const auto p1 = momentum(n);
+  for (int d = 0; d < 3; ++d) EXPECT_NEAR(p1[d], p0[d], 1e-13 * m1 * v0);
+  EXPECT_EQ(c.resultant().n_active, 0);
+  EXPECT_NEAR(n.v.z[node], -v0 * (m1 - m2) / (m1 + m2), 1e-3 * v0);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(n.v.z[i], -v0 * 2 * m1 / (m1 + m2), 1e-3 * v0);
+  EXPECT_NEAR(kinetic(n), e0, 1e-3 * e0);
+}
+
+TEST(ContactPenalty, CoulombFrictionDeceleratesAtMuG) {
+  NodalState n;
+  const double m = 1.0, g = 9.81e-3, mu = 0.3, K = 1e3, gap = 0.05, dt = 1e-3, v0 = 0.05;
+  ContactSurface s = flat_quad(n, 100.0, 1.0, K, true);
+  const Index node = add_node(n, {0, 0, gap - m * g / K}, m, {v0, 0, 0});  // at equilibrium
+  std::vector<std::uint8_t> fixed(n.n_nodes, 0);
+  for (int i = 0; i < 4; ++i) fixed[i] = 1;
+  PenaltyContactParams p;
+  p.gapmin = gap;
+  p.fric = mu;
+  p.vis_s = 0;
+  PenaltyContact c(s, {node}, p, n);
+  double t = 0;
+  const int steps = 10000;  // 10 time units: v drops by mu g 10 = 0.029 < v0
+  for (int k = 0; k < steps; ++k) {
+    step(n, dt, [&](NodalState& s2) {
+      s2.force.z[node] -= m * g;
+      c.add_forces(s2, t, dt);
+    }, fixed);
+    t += dt;
+  }
+  const double decel = (v0 - n.v.x[node]) / t;
+  EXPECT_NEAR(decel, mu * g, 1e-3 * mu * g);
+  // Friction energy = work of the friction force = mu m g * distance.
+  const double dist = n.x.x[node];
+  EXPECT_NEAR(c.friction_energy(), mu * m * g * dist, 2e-3 * mu * m * g * dist);
+}
+
+TEST(ContactPenalty, FrictionSticksBelowTheCoulombLimit) {
+  // A tangential pull F = 0.8 mu N, ramped slowly, only stretches the stick spring:
+  // the node ends at the static stick displacement F/K (no slip).
+  NodalState n;
+  const double m = 1.0, N = 1.0, mu = 0.5, K = 1e3, gap = 0.05, dt = 1e-3;
+  ContactSurface s = flat_quad(n, 10.0, 1.0, K, true);
+  const Index node = add_node(n, {0, 0, gap - N / K}, m);
+  std::vector<std::uint8_t> fixed(n.n_nodes, 0);
+  for (int i = 0; i < 4; ++i) fixed[i] = 1;
+  PenaltyContactParams p;
+  p.gapmin = gap;
+  p.fric = mu;
+  p.vis_s = 0.5;
+  PenaltyContact c(s, {node}, p, n);
+  double t = 0;
+  const double F = 0.8 * mu * N, ramp = 10.0;
+  for (int k = 0; k < 20000; ++k) {
+    step(n, dt, [&](NodalState& s2) {
+      s2.force.z[node] -= N;
+      s2.force.x[node] += F * std::min(1.0, t / ramp);
+      c.add_forces(s2, t, dt);
+    }, fixed);
+    t += dt;
+  }
+  EXPECT_NEAR(n.x.x[node], F / K, 0.1 * F / K);
+  // Nothing dissipated: the friction energy is what the stick spring stores, F^2/(2K).
+  EXPECT_NEAR(c.friction_energy(), F * F / (2 * K), 0.2 * F * F / (2 * K));
+}
+
+TEST(ContactPenalty, DampingDissipatesWhatTheNodeLoses) {
+  NodalState n;
+  const double m = 1e-3, K = 100, v0 = 1.0, dt = 1e-5;
+  ContactSurface s = flat_quad(n, 1.0, 1.0, K, true);
+  const Index node = add_node(n, {0, 0, 0.2}, m, {0, 0, -v0});
+  std::vector<std::uint8_t> fixed(n.n_nodes, 0);
+  for (int i = 0; i < 4; ++i) fixed[i] = 1;
+  PenaltyContactParams p;
+  p.gapmin = 0.1;
+  p.vis_s = 0.1;
+  PenaltyContact c(s, {node}, p, n);
+  const double e0 = kinetic(n);
+  double t = 0;
+  for (int k = 0; k < 40000; ++k) {
+    step(n, dt, [&](NodalState& s2) { c.add_forces(s2, t, dt); }, fixed);
+    t += dt;
+  }
+  ASSERT_EQ(c.resultant().n_active, 0);
+  const double e1 = kinetic(n);
+  // Linear damped oscillator: restitution exp(-zeta pi / sqrt(1 - zeta^2)) = 0.7292 for
+  // zeta = 0.1; the force is kept compressive, which ends contact slightly earlier and
+  // gives back a little less: the rebound lies between that value and 1.
+  const double e = n.v.z[node] / v0;
+  EXPECT_GT(e, 0.7292 - 1e-3);
+  EXPECT_LT(e, 0.80);
+  // Contact energy (-work) equals the kinetic energy lost (balance, 1e-3).
+  EXPECT_NEAR(-c.work(), e0 - e1, 1e-3 * e0);
+  EXPECT_NEAR(c.damping_energy(), e0 - e1, 1e-3 * e0);
+}
+
+TEST(ContactPenalty, SelfContactOfFoldedStrip) {
+  // Strip of 10 unit shell quads (width 1) folded in two: the upper layer lies 0.05
+  // above the lower one, the fold is a vertical quad. Gap 0.1: each upper node sees the
+  // lower layer (not its neighbour) and is pushed up, and vice versa; nodes at the fold
+  // see only neighbours.
+  NodalState n;
+  ContactSurface s;
+  std::vector<Index> lo0, lo1, up0, up1;
+  for (int i = 0; i <= 5; ++i) {
+    lo0.push_back(add_node(n, {double(i), 0, 0}, 1));
+    lo1.push_back(add_node(n, {double(i), 1, 0}, 1));
+  }
+  for (int i = 0; i <= 5; ++i) {
+    up0.push_back(add_node(n, {double(5 - i), 0, 0.05}, 1));
+    up1.push_back(add_node(n, {double(5 - i), 1, 0.05}, 1));
+  }
+  auto quad = [&](Index a, Index b, Index c, Index d) {
+    s.nodes.push_back({a, b, c, d});
+    s.k0.push_back(10);
+    s.thickness.push_back(0.01);
+    s.one_sided.push_back(0);
+    s.depth.push_back(0);
+  };
+  for (int i = 0; i < 5; ++i) quad(lo0[i], lo0[i + 1], lo1[i + 1], lo1[i]);
+  quad(lo0[5], up0[0], up1[0], lo1[5]);  // the fold
+  for (int i = 0; i < 5; ++i) quad(up0[i], up0[i + 1], up1[i + 1], up1[i]);
+  std::vector<Index> all;
+  for (std::size_t i = 0; i < n.n_nodes; ++i) all.push_back(static_cast<Index>(i));
+  PenaltyContactParams p;
+  p.gapmin = 0.1;
+  p.vis_s = 0;
+  PenaltyContact c(s, all, p, n);
+  n.force.fill(0);
+  c.add_forces(n, 0.0, 0.0);
+  double fz_up = 0, fz_lo = 0;
+  for (int i = 0; i <= 5; ++i) {
+    fz_up += n.force.z[up0[i]] + n.force.z[up1[i]];
+    fz_lo += n.force.z[lo0[i]] + n.force.z[lo1[i]];
+    // Node x = 0 of the upper layer sits above x = 0 of the lower: pushed up.
+  }
+  EXPECT_GT(fz_up, 0);
+  EXPECT_LT(fz_lo, 0);
+  EXPECT_NEAR(fz_up + fz_lo, 0.0, 1e-12 * fz_up);
+  EXPECT_GT(c.resultant().n_active, 0);
+  // Every force is along z (layers are parallel): no in-plane push from neighbours.
+  for (std::size_t i = 0; i < n.n_nodes; ++i) {
+    EXPECT_NEAR(n.force.x[i], 0.0, 1e-12);
+    EXPECT_NEAR(n.force.y[i], 0.0, 1e-12);
+  }
+  // Unfolded flat strip: no contact at all (only neighbours within the gap).
+  NodalState f;
+  ContactSurface fs;
+  std::vector<Index> a0, a1;
+  for (int i = 0; i <= 10; ++i) {
+    a0.push_back(add_node(f, {0.5 * i, 0, 0}, 1));
+    a1.push_back(add_node(f, {0.5 * i, 0.5, 0}, 1));
+  }
+  for (int i = 0; i < 10; ++i) {
+    fs.nodes.push_back({a0[i], a0[i + 1], a1[i + 1], a1[i]});
+    fs.k0.push_back(10);
+    fs.thickness.push_back(0.01);
+    fs.one_sided.push_back(0);
+    fs.depth.push_back(0);
+  }
+  std::vector<Index> fall;
+  for (std::size_t i = 0; i < f.n_nodes; ++i) fall.push_back(static_cast<Index>(i));
+  PenaltyContact cf(fs, fall, p, f);
+  cf.add_forces(f, 0.0, 0.0);
+  EXPECT_EQ(cf.resultant().n_active, 0);
+}
+
+TEST(ContactPenalty, ResortOnlyAfterHalfMarginDisplacement) {
+  NodalState n;
+  ContactSurface s = flat_quad(n, 1.0, 1.0, 10, true);
+  const Index node = add_node(n, {0, 0, 3.0}, 1.0);
+  PenaltyContactParams p;
+  p.gapmin = 0.1;
+  p.margin = 0.4;
+  PenaltyContact c(s, {node}, p, n);
+  EXPECT_EQ(c.n_sorts(), 1u);
+  EXPECT_EQ(c.n_candidates(), 0u);  // 3.0 away: beyond gap + margin + depth
+  n.x.z[node] = 3.0 - 0.19;         // moved less than margin / 2
+  c.add_forces(n, 0, 0);
+  EXPECT_EQ(c.n_sorts(), 1u);
+  n.x.z[node] = 1.2;                // moved more: re-sort, now a candidate
+  c.add_forces(n, 0, 0);
+  EXPECT_EQ(c.n_sorts(), 2u);
+  EXPECT_EQ(c.n_candidates(), 1u);
+}
+
+TEST(ContactPenalty, StiffnessCapKeepsTheFixedStep) {
+  // With a fixed step, K <= 2 f m (Tsca/dt)^2; the node's nodal step with the contact
+  // alone is Tsca sqrt(2 m / K) >= dt / sqrt(f).
+  NodalState n;
+  const double m = 1e-6, dt = 1.5e-3, tsca = 0.9;
+  ContactSurface s = flat_quad(n, 1.0, 1.0, 1e9, true);
+  const Index node = add_node(n, {0, 0, 0.05}, m);
+  PenaltyContactParams p;
+  p.gapmin = 0.1;
+  p.fixed_dt = dt;
+  p.tsca = tsca;
+  p.cap_fraction = 0.5;
+  PenaltyContact c(s, {node}, p, n);
+  n.force.fill(0);
+  c.add_forces(n, 0, 0);
+  const double cap = 2 * 0.5 * m * (tsca / dt) * (tsca / dt);
+  EXPECT_NEAR(n.stiffness[node], cap, 1e-12 * cap);
+  EXPECT_NEAR(n.force.z[node], cap * 0.05, 1e-12 * cap);
+}
+
+TEST(ContactPenalty, TstartTstopAndVariableGap) {
+  NodalState n;
+  ContactSurface s = flat_quad(n, 1.0, 1.0, 10, false, /*thickness=*/0.4);
+  const Index node = add_node(n, {0, 0, 0.25}, 1.0);
+  PenaltyContactParams p;
+  p.igap = 1;
+  p.gapmin = 0.01;
+  p.tstart = 1.0;
+  p.tstop = 2.0;
+  p.stmax = 10;  // K = Kp = 10 in the whole range (law capped at Kp)
+  p.vis_s = 0;
+  PenaltyContact c(s, {node}, p, n, /*node_gap=*/{0.1});
+  EXPECT_NEAR(c.gap_of_pair(0, 0), 0.3, 1e-15);  // t_main/2 + gs
+  n.force.fill(0);
+  c.add_forces(n, 0.5, 0);
+  EXPECT_EQ(n.force.z[node], 0.0);
+  c.add_forces(n, 1.5, 0);
+  EXPECT_NEAR(n.force.z[node], 10 * (0.3 - 0.25), 1e-12);
+  n.force.fill(0);
+  c.add_forces(n, 2.5, 0);
+  EXPECT_EQ(n.force.z[node], 0.0);
+}
+
+TEST(ContactPenalty, ShellLawStiffensTowardsMidSurface) {
+  // K(p) = Kp g/(g-p): F(g/2) = Kp g; potential is the integral of F.
+  const double kp = 2, g = 0.5, kmax = 1e9;
+  EXPECT_NEAR(PenaltyContact::law_force(0.25, g, kp, kmax, false), kp * g, 1e-14);
+  const double h = 1e-6, p = 0.3;
+  const double dU = (PenaltyContact::law_energy(p + h, g, kp, kmax, false) -
+                     PenaltyContact::law_energy(p - h, g, kp, kmax, false)) / (2 * h);
+  EXPECT_NEAR(dU, PenaltyContact::law_force(p, g, kp, kmax, false), 1e-6);
+  // Capped branch: F = kmax p beyond p* = g (1 - kp/kmax).
+  EXPECT_NEAR(PenaltyContact::law_force(0.45, g, kp, 10.0, false), 10.0 * 0.45, 1e-12);
+}
