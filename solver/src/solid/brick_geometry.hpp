@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Geometry of the 8-node brick with one-point (uniform strain) integration,
+// Flanagan & Belytschko (1981), IJNME 17:679-706.
+//  - Volume gradient b_I = dV/dx_I = integral of grad N_I over the element, computed
+//    exactly face by face (divergence theorem): for a bilinear face P1..P4 with
+//    a = (-P1+P2+P3-P4)/4, b = (P1-P2+P3-P4)/4, c = (-P1-P2+P3+P4)/4,
+//    integral of N_a n dA = a x c + (a x b) s_a / 3 + (b x c) t_a / 3.
+//    Then B_I = b_I / V (uniform gradient), V = (1/3) sum_I x_I . b_I. Adjacent
+//    elements share face integrals, so the patch test holds on distorted meshes.
+//  - Hourglass base vectors h_alpha (eta zeta, xi zeta, xi eta, xi eta zeta) and the
+//    FB projection gamma_alpha,I = h_alpha,I - (sum_J h_alpha,J x_J) . B_I.
+// Node order: n1-n4 one face, n5-n8 opposite (n5 above n1), reference coordinates
+// xi = (-1,1,1,-1,-1,1,1,-1), eta = (-1,-1,1,1,-1,-1,1,1), zeta = (-1,-1,-1,-1,1,1,1,1).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace hbm::solver::brick {
+
+inline constexpr double kXi[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+inline constexpr double kEta[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+inline constexpr double kZeta[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+inline constexpr double kHourglass[4][8] = {
+    {1, 1, -1, -1, -1, -1, 1, 1},    // eta zeta
+    {1, -1, -1, 1, -1, 1, 1, -1},    // xi zeta
+    {1, -1, 1, -1, 1, -1, 1, -1},    // xi eta
+    {-1, 1, -1, 1, 1, -1, 1, -1}};   // xi eta zeta
+// Faces with outward normal (s from first to second node, t from second to third).
+inline constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                     {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// Volume gradient (bx, by, bz per node), volume, largest face area.
+inline void volume_gradient(const double* x, const double* y, const double* z, double* bx,
+                            double* by, double* bz, double& volume, double& max_face_area) {
+  for (int i = 0; i < 8; ++i) bx[i] = by[i] = bz[i] = 0.0;
+  double amax2 = 0.0;
+  for (const auto& f : kFaces) {
+    const int p1 = f[0], p2 = f[1], p3 = f[2], p4 = f[3];
+    const double ax = 0.25 * (-x[p1] + x[p2] + x[p3] - x[p4]);
+    const double ay = 0.25 * (-y[p1] + y[p2] + y[p3] - y[p4]);
+    const double az = 0.25 * (-z[p1] + z[p2] + z[p3] - z[p4]);
+    const double cx = 0.25 * (-x[p1] - x[p2] + x[p3] + x[p4]);
+    const double cy = 0.25 * (-y[p1] - y[p2] + y[p3] + y[p4]);
+    const double cz = 0.25 * (-z[p1] - z[p2] + z[p3] + z[p4]);
+    const double tx = 0.25 * (x[p1] - x[p2] + x[p3] - x[p4]);
+    const double ty = 0.25 * (y[p1] - y[p2] + y[p3] - y[p4]);
+    const double tz = 0.25 * (z[p1] - z[p2] + z[p3] - z[p4]);
+    // a x c, (a x b)/3, (b x c)/3 with b = (tx, ty, tz)
+    const double acx = ay * cz - az * cy, acy = az * cx - ax * cz, acz = ax * cy - ay * cx;
+    const double abx = (ay * tz - az * ty) / 3.0, aby = (az * tx - ax * tz) / 3.0,
+                 abz = (ax * ty - ay * tx) / 3.0;
+    const double bcx = (ty * cz - tz * cy) / 3.0, bcy = (tz * cx - tx * cz) / 3.0,
+                 bcz = (tx * cy - ty * cx) / 3.0;
+    // s_a = (-1, 1, 1, -1), t_a = (-1, -1, 1, 1)
+    bx[p1] += acx - abx - bcx; by[p1] += acy - aby - bcy; bz[p1] += acz - abz - bcz;
+    bx[p2] += acx + abx - bcx; by[p2] += acy + aby - bcy; bz[p2] += acz + abz - bcz;
+    bx[p3] += acx + abx + bcx; by[p3] += acy + aby + bcy; bz[p3] += acz + abz + bcz;
+    bx[p4] += acx - abx + bcx; by[p4] += acy - aby + bcy; bz[p4] += acz - abz + bcz;
+    amax2 = std::max(amax2, acx * acx + acy * acy + acz * acz);
+  }
+  double v = 0.0;
+  for (int i = 0; i < 8; ++i) v += x[i] * bx[i] + y[i] * by[i] + z[i] * bz[i];
+  volume = v / 3.0;
+  max_face_area = 4.0 * std::sqrt(amax2);
+}
+
+}  // namespace hbm::solver::brick

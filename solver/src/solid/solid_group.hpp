@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Solid element group: 8-node bricks (one-point Flanagan-Belytschko, degenerate prism /
+// tetra shapes allowed) or 4-node constant-strain tetrahedra, of one part.
+// Struct of arrays; the kernel in solid_group.cpp runs per chunk of kChunk elements.
+//
+// Hourglass control (bricks), chosen by /PROP/TYPE14 Isolid:
+//  - Viscous (Isolid 0/1, default except LAW34): f = -c q gamma,
+//    c = h rho c_wave V^(2/3) / 4, q_alpha = sum_I v_I gamma_alpha,I (FB 1981).
+//  - Stiffness (Isolid 2): Q += k q dt, k = h (lambda + 2G) V (B:B) / 8, f = -Q gamma.
+//  - Physical (Isolid 24, default for LAW34): hourglass strains of the linear and
+//    bilinear velocity modes in a corotational element frame, deviatoric energy
+//    2 G0 dev(eps_hg) only (no volumetric locking: Belytschko & Bindeman 1993 ADS),
+//    parasitic shear of the bending modes dropped (no shear locking), closed form for a
+//    box with half-lengths a_j (docs/engine-design.md §12). Q accumulated in the
+//    corotational frame, so it is objective.
+// Bulk viscosity (compression only): q = rho l (qa^2 l dv^2 - qb c dv), dv = tr D < 0.
+#pragma once
+
+#include "hbm/solver/element_group.hpp"
+#include "solid/solid_material.hpp"
+
+#include <array>
+#include <vector>
+
+namespace hbm::solver {
+
+enum class HourglassForm : std::uint8_t { Viscous, Stiffness, Physical };
+
+class SolidGroup final : public ElementGroup {
+ public:
+  SolidMaterial material;
+  HourglassForm hourglass = HourglassForm::Viscous;
+  double hourglass_coef = 0.1;   // h of /PROP/TYPE14
+  double qa = 1.1, qb = 0.05;    // bulk viscosity
+
+  // Per-element state (struct of arrays).
+  std::vector<double> volume0;             // [length^3]
+  std::vector<double> mass;                // rho0 V0 [mass]
+  std::array<std::vector<double>, 6> sig;  // stress (LAW34: long-term part) [stress]
+  std::array<std::vector<double>, 6> hist; // LAW34 hereditary deviator [stress]
+  std::vector<double> eps_p;               // plastic strain (LAW2/36)
+  std::vector<double> e_int;               // internal energy of the element [energy]
+  std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]
+
+  // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
+  // compute V0 and mass from the current nodal positions. Returns the local index of
+  // the first element with non-positive volume, or kNoIndex.
+  Index initialize(const NodalState& nodes);
+
+  std::string_view formulation() const override;
+  void compute_forces(const StepContext& step, const NodalState& nodes,
+                      GroupStepResult& result) override;
+  void cell_field(CellField field, std::span<double> out) const override;
+
+  // Total stress of element e (LAW34: long-term part + hereditary part).
+  void stress(std::size_t e, double s[6]) const;
+
+ private:
+  template <int NPE>
+  void compute_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
+                     double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
+                     Index& inverted);
+};
+
+}  // namespace hbm::solver

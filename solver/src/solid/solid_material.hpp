@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Constitutive laws of solid elements and their stress update at one integration point.
+// Stresses are Cauchy, Voigt order xx yy zz xy yz zx, in the global frame, advanced with
+// the Jaumann rate (objective): sigma' = sigma + dt (C:D + W sigma - sigma W).
+//  - LAW1  hypoelastic isotropic: C:D = lambda tr(D) I + 2 G D.
+//  - LAW2  Johnson-Cook / LAW36 tabulated: elastic predictor, 3D radial return on the
+//          deviator (hardening.hpp), pressure elastic; EPS_p_max deletes the element.
+//  - LAW34 Boltzmann viscoelastic: p from K (hypoelastic), deviator
+//          s = 2 Ginf e + h,  h^{n+1} = exp(-beta dt) h^n + 2 (G0 - Ginf) (1 - exp(-beta dt))
+//          / (beta dt) de   (exact recursive hereditary integral for a strain rate
+//          constant over the step; Herrmann & Peterson 1968, Radioss LAW34).
+#pragma once
+
+#include "hbm/solver/material/hardening.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace hbm::solver {
+
+enum class SolidLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, Viscoelastic = 34, Tabulated = 36 };
+
+struct SolidMaterial {
+  SolidLaw law = SolidLaw::Elastic;
+  std::int64_t id = 0;
+  double rho = 0;                  // initial density [mass/length^3]
+  double E = 0, nu = 0;            // LAW1/2/36 [stress], [-]
+  double K = 0, G = 0, lambda = 0; // bulk, shear (instantaneous: G0 for LAW34), Lame [stress]
+  double G0 = 0, Ginf = 0, beta = 0;  // LAW34 [stress], [stress], [1/time]
+  PlasticityLaw plasticity;        // LAW2 / LAW36
+
+  bool plastic() const { return law == SolidLaw::JohnsonCook || law == SolidLaw::Tabulated; }
+  bool viscoelastic() const { return law == SolidLaw::Viscoelastic; }
+  // Dilatational modulus for the wave speed: K + 4/3 G [stress].
+  double wave_modulus() const { return K + 4.0 / 3.0 * G; }
+  void set_elastic(double E_, double nu_) {
+    E = E_;
+    nu = nu_;
+    G = E / (2.0 * (1.0 + nu));
+    K = E / (3.0 * (1.0 - 2.0 * nu));
+    lambda = K - 2.0 / 3.0 * G;
+  }
+  void set_viscoelastic(double K_, double G0_, double Ginf_, double beta_) {
+    K = K_;
+    G0 = G0_;
+    Ginf = Ginf_;
+    beta = beta_;
+    G = G0;
+    lambda = K - 2.0 / 3.0 * G;
+    E = 9.0 * K * G / (3.0 * K + G);
+    nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
+  }
+};
+
+// Jaumann rotation increment dt (W sigma - sigma W) for symmetric sigma (Voigt) and the
+// spin W_ij = (L_ij - L_ji)/2 given by wxy = W_xy, wyz = W_yz, wzx = W_zx:
+// W = [[0, wxy, -wzx], [-wxy, 0, wyz], [wzx, -wyz, 0]].
+inline void jaumann_increment(const double s[6], double wxy, double wyz, double wzx,
+                              double dt, double ds[6]) {
+  // Full matrices: S = [[s0 s3 s5],[s3 s1 s4],[s5 s4 s2]]; (WS - SW) is symmetric.
+  const double W[3][3] = {{0.0, wxy, -wzx}, {-wxy, 0.0, wyz}, {wzx, -wyz, 0.0}};
+  const double S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
+  auto ws_sw = [&](int i, int j) {
+    double r = 0.0;
+    for (int k = 0; k < 3; ++k) r += W[i][k] * S[k][j] - S[i][k] * W[k][j];
+    return r;
+  };
+  ds[0] = dt * ws_sw(0, 0);
+  ds[1] = dt * ws_sw(1, 1);
+  ds[2] = dt * ws_sw(2, 2);
+  ds[3] = dt * ws_sw(0, 1);
+  ds[4] = dt * ws_sw(1, 2);
+  ds[5] = dt * ws_sw(2, 0);
+}
+
+// Per-point state the update reads and writes (pointers into the group's arrays).
+struct SolidPointState {
+  double* sig;       // 6 Cauchy stress (LAW34: elastic part 2 Ginf e - p I)
+  double* hist;      // 6 hereditary deviatoric stress h (LAW34 only), else nullptr
+  double* eps_p;     // equivalent plastic strain (LAW2/36), else nullptr
+};
+
+// Advance the stress over dt with rate of deformation d (Voigt, engineering-free:
+// d[3] = D_xy etc.) and spin (wxy, wyz, wzx). Writes the total stress to `out`.
+// Returns the plastic strain increment.
+double update_solid_stress(const SolidMaterial& m, const SolidPointState& st, const double d[6],
+                           double wxy, double wyz, double wzx, double dt, double out[6]);
+
+inline double von_mises(const double s[6]) {
+  const double p = (s[0] + s[1] + s[2]) / 3.0;
+  const double a = s[0] - p, b = s[1] - p, c = s[2] - p;
+  return std::sqrt(1.5 * (a * a + b * b + c * c + 2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+}
+
+}  // namespace hbm::solver
