@@ -27,7 +27,7 @@ void SpringAxialGroup::compute_forces(const StepContext& step, const NodalState&
   std::vector<double> chunk_dt(nc, std::numeric_limits<double>::infinity());
   std::vector<Index> chunk_el(nc, kNoIndex);
   std::vector<std::uint8_t> chunk_broke(nc, 0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nc > 1)
   for (std::size_t c = 0; c < nc; ++c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);
     for (std::size_t e = c * kChunk; e < end; ++e) {

@@ -16,7 +16,7 @@ void SpringGeneralGroup::compute_forces(const StepContext& step, const NodalStat
   std::vector<Index> chunk_el(nc, kNoIndex);
   std::vector<std::uint8_t> chunk_broke(nc, 0);
   if (rotation.size() != n_elements) rotation.assign(n_elements, Eigen::Vector3d::Zero());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nc > 1)
   for (std::size_t c = 0; c < nc; ++c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);
     for (std::size_t e = c * kChunk; e < end; ++e) {

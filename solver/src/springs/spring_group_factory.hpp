@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Construction of a spring group from a resolved property and its elements: initial
+// lengths, per-element history, frames (TYPE13), slot buffers. Used by the /SPRING
+// builder and by the tests; nodal masses and inertias are the caller's (the builder adds
+// them through the BuildContext, see spring_nodal_share()).
+#pragma once
+
+#include "springs/spring_group.hpp"
+
+#include <memory>
+
+namespace hbm::solver::springs {
+
+// Mass and inertia a spring gives to each of its two nodes (half of the property's,
+// times the initial length when the property is per unit length).
+struct SpringNodalShare {
+  double mass = 0;     // [mass]
+  double inertia = 0;  // [mass*length^2]
+};
+SpringNodalShare spring_nodal_share(const SpringProperty& prop, double length0);
+
+// True when some rotational DOF of a 6-DOF property has a stiffness, damping or curve.
+bool has_rotational_law(const SpringProperty& prop);
+
+std::unique_ptr<SpringGroup> make_spring_group(const SpringProperty& prop, Index part,
+                                               std::vector<Index> connectivity,
+                                               std::vector<std::int64_t> element_ids,
+                                               const NodalState& nodes);
+
+}  // namespace hbm::solver::springs
