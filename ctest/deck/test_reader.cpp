@@ -168,3 +168,45 @@ TEST(DeckReader, UnknownFieldNameThrows) {
   const Card& steel = *r.deck.cards_of("/MAT/LAW1")[0];
   EXPECT_THROW((void)steel.real(1, "Young"), std::out_of_range);
 }
+
+TEST(DeckReader, RigidBodiesSurfacesContactsWallsSprings) {
+  const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
+  ASSERT_TRUE(r.ok()) << all_messages(r);
+  const Deck& d = r.deck;
+  const Card& t8 = *d.cards_of("/PROP/TYPE8")[0];
+  EXPECT_DOUBLE_EQ(t8.real(0, "Mass"), 0.002);
+  EXPECT_DOUBLE_EQ(t8.real(0, "Inertia"), 1e-3);
+  EXPECT_DOUBLE_EQ(t8.real(1, "K1"), 100.0);
+  EXPECT_DOUBLE_EQ(t8.real(1, "C1"), 0.1);
+  EXPECT_DOUBLE_EQ(t8.real(4, "K2"), 200.0);
+  EXPECT_DOUBLE_EQ(t8.real(7, "K3"), 300.0);
+  EXPECT_DOUBLE_EQ(t8.real(10, "K4"), 0.0);   // absent block
+  EXPECT_DOUBLE_EQ(t8.real(12, "Ascale4"), 1.0);  // default of an absent line
+  const Card& t13 = *d.cards_of("/PROP/TYPE13")[0];
+  EXPECT_DOUBLE_EQ(t13.real(1, "K1"), 50.0);
+  const Card& rb = *d.cards_of("/RBODY")[0];
+  EXPECT_EQ(rb.integer(0, "node_id"), 11);
+  EXPECT_DOUBLE_EQ(rb.real(0, "Mass"), 0.5);
+  EXPECT_EQ(rb.integer(0, "grnod_id"), 1);
+  EXPECT_DOUBLE_EQ(rb.real(1, "Jzz"), 3.0);
+  const Card& seg = *d.cards_of("/SURF/SEG")[0];
+  EXPECT_EQ(seg.integer(seg.row(0), "n4"), 2);
+  const Card& i7 = *d.cards_of("/INTER/TYPE7")[0];
+  EXPECT_EQ(i7.integer(0, "grnod_id"), 2);
+  EXPECT_EQ(i7.integer(0, "surf_id"), 1);
+  EXPECT_DOUBLE_EQ(i7.real(3, "Stfac"), 1.0);
+  EXPECT_DOUBLE_EQ(i7.real(3, "Fric"), 0.2);
+  EXPECT_DOUBLE_EQ(i7.real(3, "Gapmin"), 0.5);
+  EXPECT_DOUBLE_EQ(i7.real(4, "Bumult"), 0.2);
+  EXPECT_EQ(d.text(i7, i7.lines[4], "IBC"), "000");
+  const Card& i2 = *d.cards_of("/INTER/TYPE2")[0];
+  EXPECT_DOUBLE_EQ(i2.real(0, "dsearch"), 0.5);
+  const Card& wall = *d.cards_of("/RWALL/PLANE")[0];
+  EXPECT_EQ(wall.integer(0, "grnod_id1"), 2);
+  EXPECT_DOUBLE_EQ(wall.real(1, "fric"), 0.1);
+  EXPECT_DOUBLE_EQ(wall.real(2, "ZM"), -5.0);
+  EXPECT_DOUBLE_EQ(wall.real(3, "ZM1"), 0.0);
+  const Card& ths = *d.cards_of("/TH/INTER")[0];
+  EXPECT_EQ(ths.integer(ths.row(0), "id2"), 2);
+  EXPECT_EQ(d.cards_of("/TH/RWALL")[0]->integer(d.cards_of("/TH/RWALL")[0]->row(0), "id1"), 1);
+}

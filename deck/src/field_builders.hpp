@@ -102,6 +102,7 @@ inline LineSpec line(std::string_view name, std::vector<FieldSpec> fields, bool 
 void add_starter_geometry(std::vector<KeywordSpec>& out);
 void add_starter_model(std::vector<KeywordSpec>& out);
 void add_starter_loads(std::vector<KeywordSpec>& out);
+void add_starter_contact(std::vector<KeywordSpec>& out);
 void add_engine(std::vector<KeywordSpec>& out);
 
 }  // namespace hbm::deck::tables

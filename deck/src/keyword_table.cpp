@@ -19,6 +19,7 @@ struct Index {
     tables::add_starter_geometry(table);
     tables::add_starter_model(table);
     tables::add_starter_loads(table);
+    tables::add_starter_contact(table);
     tables::add_engine(table);
     for (const KeywordSpec& k : table) by_name.emplace(k.keyword, &k);
   }

@@ -100,6 +100,81 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     }, true));
     out.push_back(std::move(k));
   }
+  for (const bool beam : {false, true}) {
+    KeywordSpec k = object(beam ? "/PROP/TYPE13" : "/PROP/TYPE8",
+                           beam ? "Beam-type spring: 6 DOF (tension, 2 shears, torsion, 2 bendings) in the spring frame."
+                                : "General spring: 6 independent DOF (X Y Z translations, X Y Z rotations).");
+    if (beam) {
+      k.lines.push_back(line("line 1", {
+          real_field("Mass", 0, Dimension::Mass, kNonNegative, 0, "spring mass"),
+          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia"),
+          id_field("skew_id", 40, RefKind::Skew, false, "skew system"),
+          id_field("sens_id", 50, RefKind::Sensor, false, "sensor"),
+          int_field("Isflag", 60, 0, 2, 0, "sensor flag"),
+          int_field("Ifail", 70, 0, 1, 0, "failure criteria flag"),
+          int_field("Ileng", 80, 0, 1, 0, "input per unit length flag"),
+          int_field("Ifail2", 90, 0, 3, 0, "failure model flag"),
+      }));
+    } else {
+      k.lines.push_back(line("line 1", {
+          real_field("Mass", 0, Dimension::Mass, kNonNegative, 0, "spring mass"),
+          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia (I)"),
+          id_field("skew_id", 40, RefKind::Skew, false, "skew system"),
+          id_field("sens_id", 50, RefKind::Sensor, false, "sensor"),
+          int_field("Isflag", 60, 0, 2, 0, "sensor flag"),
+          int_field("Ifail", 70, 0, 1, 0, "failure criteria flag"),
+          int_field("Ifail2", 80, 0, 3, 0, "failure model flag"),
+          int_field("Iequil", 90, 0, 1, 0, "equilibrium flag"),
+      }));
+    }
+    // Six blocks of three lines, one per DOF i = 1..6 (1-3 translations, 4-6 rotations).
+    static constexpr std::string_view K[] = {"K1", "K2", "K3", "K4", "K5", "K6"};
+    static constexpr std::string_view C[] = {"C1", "C2", "C3", "C4", "C5", "C6"};
+    static constexpr std::string_view A[] = {"A1", "A2", "A3", "A4", "A5", "A6"};
+    static constexpr std::string_view B[] = {"B1", "B2", "B3", "B4", "B5", "B6"};
+    static constexpr std::string_view D[] = {"D1", "D2", "D3", "D4", "D5", "D6"};
+    static constexpr std::string_view F1[] = {"fct_ID11", "fct_ID12", "fct_ID13", "fct_ID14", "fct_ID15", "fct_ID16"};
+    static constexpr std::string_view H[] = {"H1", "H2", "H3", "H4", "H5", "H6"};
+    static constexpr std::string_view F2[] = {"fct_ID21", "fct_ID22", "fct_ID23", "fct_ID24", "fct_ID25", "fct_ID26"};
+    static constexpr std::string_view F3[] = {"fct_ID31", "fct_ID32", "fct_ID33", "fct_ID34", "fct_ID35", "fct_ID36"};
+    static constexpr std::string_view F4[] = {"fct_ID41", "fct_ID42", "fct_ID43", "fct_ID44", "fct_ID45", "fct_ID46"};
+    static constexpr std::string_view DMIN[] = {"dmin1", "dmin2", "dmin3", "dmin4", "dmin5", "dmin6"};
+    static constexpr std::string_view DMAX[] = {"dmax1", "dmax2", "dmax3", "dmax4", "dmax5", "dmax6"};
+    static constexpr std::string_view FF[] = {"F1", "F2", "F3", "F4", "F5", "F6"};
+    static constexpr std::string_view EE[] = {"E1", "E2", "E3", "E4", "E5", "E6"};
+    static constexpr std::string_view AS[] = {"Ascale1", "Ascale2", "Ascale3", "Ascale4", "Ascale5", "Ascale6"};
+    static constexpr std::string_view HS[] = {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"};
+    static constexpr std::string_view block_names[6][3] = {
+        {"DOF 1 stiffness", "DOF 1 functions", "DOF 1 rate"}, {"DOF 2 stiffness", "DOF 2 functions", "DOF 2 rate"},
+        {"DOF 3 stiffness", "DOF 3 functions", "DOF 3 rate"}, {"DOF 4 stiffness", "DOF 4 functions", "DOF 4 rate"},
+        {"DOF 5 stiffness", "DOF 5 functions", "DOF 5 rate"}, {"DOF 6 stiffness", "DOF 6 functions", "DOF 6 rate"}};
+    for (int i = 0; i < 6; ++i) {
+      const bool rot = i >= 3;
+      k.lines.push_back(line(block_names[i][0], {
+          real_field(K[i], 0, rot ? Dimension::RotStiffness : Dimension::Stiffness, kNonNegative, 0, "linear stiffness"),
+          real_field(C[i], 20, rot ? Dimension::RotDamping : Dimension::Damping, kNonNegative, 0, "linear damping"),
+          real_field(A[i], 40, Dimension::None, kAny, 1, "scale of the nonlinear stiffness function"),
+          real_field(B[i], 60, Dimension::None, kAny, 0, "logarithmic rate effect scale"),
+          real_field(D[i], 80, Dimension::None, kAny, 1, "logarithmic rate effect scale"),
+      }, true));
+      k.lines.push_back(line(block_names[i][1], {
+          fct(F1[i], 0, "force (moment) vs displacement (rotation) function"),
+          int_field(H[i], 10, 0, 8, 0, "hardening flag (0 elastic)"),
+          fct(F2[i], 20, "rate effect function"),
+          fct(F3[i], 30, "unloading function"),
+          fct(F4[i], 40, "damping function"),
+          real_field(DMIN[i], 60, rot ? Dimension::Angle : Dimension::Length, kAny, 0, "failure limit in compression"),
+          real_field(DMAX[i], 80, rot ? Dimension::Angle : Dimension::Length, kAny, 0, "failure limit in tension"),
+      }, true));
+      k.lines.push_back(line(block_names[i][2], {
+          real_field(FF[i], 0, Dimension::None, kAny, 1, "rate effect scale"),
+          real_field(EE[i], 20, Dimension::None, kAny, 0, "rate effect scale"),
+          real_field(AS[i], 40, rot ? Dimension::Angle : Dimension::Length, kAny, 1, "abscissa scale of the stiffness function"),
+          real_field(HS[i], 60, Dimension::Velocity, kAny, 1, "abscissa scale of the rate function"),
+      }, true));
+    }
+    out.push_back(std::move(k));
+  }
   {
     KeywordSpec k = object("/PROP/TYPE14", "Solid property (8-node brick, 4-node tetra).");
     k.lines.push_back(line("line 1", {
