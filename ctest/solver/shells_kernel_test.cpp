@@ -46,8 +46,8 @@ TEST(ShellMaterialPoint, PureShearPlateauIsYieldOverSqrt3) {
   // Perfect plasticity (b = 0): tau -> a / sqrt(3) (von Mises in pure shear).
   ShellMaterial m = steel_elastic();
   m.law = ShellLaw::JohnsonCook;
-  m.a = 0.3;
-  m.b = 0.0;
+  m.plasticity.jc.a = 0.3;
+  m.plasticity.jc.b = 0.0;
   PointStress s{0, 0, 0};
   double epsp = 0;
   const double dg = 1e-4;
@@ -57,7 +57,7 @@ TEST(ShellMaterialPoint, PureShearPlateauIsYieldOverSqrt3) {
     update_point(m, de, 1e-3, s, epsp, nullptr);
     gamma += dg;
   }
-  EXPECT_NEAR(s.sxy, m.a / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(s.sxy, m.plasticity.jc.a / std::sqrt(3.0), 1e-12);
   EXPECT_NEAR(s.sxx, 0.0, 1e-14);
   // Plastic shear strain gamma_p = gamma - tau/G, equivalent eps_p = gamma_p / sqrt(3).
   const double G = m.E / (2 * (1 + m.nu));
@@ -67,9 +67,9 @@ TEST(ShellMaterialPoint, PureShearPlateauIsYieldOverSqrt3) {
 TEST(ShellMaterialPoint, ReturnIsOnTheYieldSurfaceForArbitraryPaths) {
   ShellMaterial m = steel_elastic();
   m.law = ShellLaw::JohnsonCook;
-  m.a = 0.25;
-  m.b = 0.5;
-  m.n = 0.4;
+  m.plasticity.jc.a = 0.25;
+  m.plasticity.jc.b = 0.5;
+  m.plasticity.jc.n = 0.4;
   PointStress s{0, 0, 0};
   double epsp = 0;
   for (int i = 0; i < 400; ++i) {
@@ -92,15 +92,21 @@ TEST(ShellMaterialPoint, TabulatedCurveMatchesJohnsonCookSampledFromIt) {
   // LAW36 with a curve sampled from linear hardening a + b eps equals LAW2 (n = 1).
   ShellMaterial jc = steel_elastic();
   jc.law = ShellLaw::JohnsonCook;
-  jc.a = 0.2;
-  jc.b = 0.8;
-  jc.n = 1.0;
+  jc.plasticity.jc.a = 0.2;
+  jc.plasticity.jc.b = 0.8;
+  jc.plasticity.jc.n = 1.0;
   ShellMaterial tab = steel_elastic();
   tab.law = ShellLaw::Tabulated;
+  std::vector<double> ex, ey;
   for (int i = 0; i <= 10; ++i) {
-    tab.curve_eps.push_back(0.1 * i);
-    tab.curve_sig.push_back(jc.a + jc.b * 0.1 * i);
+    ex.push_back(0.1 * i);
+    ey.push_back((jc.plasticity.jc.a + jc.plasticity.jc.b * 0.1 * i) / 2.0);
   }
+  const hbm::solver::FunctionCurve curve(1, "yield", ex, ey);
+  tab.plasticity.kind = hbm::solver::PlasticityLaw::Kind::Tabulated;
+  tab.plasticity.tab.curves = {&curve};
+  tab.plasticity.tab.scales = {2.0};  // ordinate scale Fscale
+  tab.plasticity.tab.rates = {0.0};
   ASSERT_TRUE(tab.check().empty());
   PointStress s1{0, 0, 0}, s2{0, 0, 0};
   double e1 = 0, e2 = 0;
@@ -117,8 +123,8 @@ TEST(ShellMaterialPoint, TabulatedCurveMatchesJohnsonCookSampledFromIt) {
 TEST(ShellMaterialPoint, FailureFlagAtEpsPMax) {
   ShellMaterial m = steel_elastic();
   m.law = ShellLaw::JohnsonCook;
-  m.a = 0.3;
-  m.eps_p_max = 0.05;
+  m.plasticity.jc.a = 0.3;
+  m.plasticity.eps_p_max = 0.05;
   PointStress s{0, 0, 0};
   double epsp = 0;
   int failed_at = -1;

@@ -35,8 +35,8 @@ double three_point_limit_load(bool tria) {
   h.g.mat.rho = rho;
   h.g.mat.E = E;
   h.g.mat.nu = 0.3;
-  h.g.mat.a = sy;
-  h.g.mat.b = 0;
+  h.g.mat.plasticity.jc.a = sy;
+  h.g.mat.plasticity.jc.b = 0;
   h.g.sec.set_points(9);
   h.finish();
   auto id = [&](int i, int j) { return i * (ny + 1) + j; };
@@ -100,10 +100,10 @@ PullResult pull_to_failure(bool tria) {
   h.g.mat.rho = rho;
   h.g.mat.E = E;
   h.g.mat.nu = 0.3;
-  h.g.mat.a = 0.3;
-  h.g.mat.b = 0.2;
-  h.g.mat.n = 0.5;
-  h.g.mat.eps_p_max = 0.1;
+  h.g.mat.plasticity.jc.a = 0.3;
+  h.g.mat.plasticity.jc.b = 0.2;
+  h.g.mat.plasticity.jc.n = 0.5;
+  h.g.mat.plasticity.eps_p_max = 0.1;
   h.g.sec.set_points(3);
   h.finish();
   auto id = [&](int i, int j) { return i * (ny + 1) + j; };
@@ -126,8 +126,9 @@ PullResult pull_to_failure(bool tria) {
   dt *= 0.8;
   PullResult r;
   r.n = h.g.n;
-  double sy_f = h.g.mat.a + h.g.mat.b * std::sqrt(h.g.mat.eps_p_max);
-  r.strain_expected = h.g.mat.eps_p_max + sy_f / E;
+  const auto& jc = h.g.mat.plasticity.jc;
+  const double sy_f = jc.a + jc.b * std::sqrt(h.g.mat.plasticity.eps_p_max);
+  r.strain_expected = h.g.mat.plasticity.eps_p_max + sy_f / E;
   bool first = true;
   double t_after = 1e300;
   while (h.time < t_after) {

@@ -34,58 +34,26 @@ std::string_view ShellMaterial::check() const {
   if (!(E > 0)) return "Young's modulus must be > 0";
   if (!(nu > -1.0 && nu < 0.5)) return "Poisson's ratio must be in (-1, 0.5)";
   if (law == ShellLaw::JohnsonCook) {
-    if (!(a > 0)) return "LAW2 yield stress a must be > 0";
-    if (b < 0 || n < 0) return "LAW2 needs b >= 0 and n >= 0";
-    if (c < 0 || !(epsdot0 > 0)) return "LAW2 needs c >= 0 and EPS_DOT_0 > 0";
+    const auto& jc = plasticity.jc;
+    if (!(jc.a > 0)) return "LAW2 yield stress a must be > 0";
+    if (jc.b < 0 || jc.n < 0) return "LAW2 needs b >= 0 and n >= 0";
+    if (jc.c < 0 || (jc.c > 0 && !(jc.eps_dot0 > 0))) return "LAW2 needs c >= 0 and EPS_DOT_0 > 0";
   }
   if (law == ShellLaw::Tabulated) {
-    if (curve_eps.size() < 1 || curve_eps.size() != curve_sig.size())
-      return "LAW36 needs a yield curve with at least one point";
-    for (std::size_t i = 1; i < curve_eps.size(); ++i)
-      if (!(curve_eps[i] > curve_eps[i - 1])) return "LAW36 yield curve abscissae must increase";
-    if (!(curve_sig[0] > 0)) return "LAW36 initial yield stress must be > 0";
+    const auto& tab = plasticity.tab;
+    if (tab.curves.empty() || tab.scales.size() != tab.curves.size() ||
+        tab.rates.size() != tab.curves.size())
+      return "LAW36 needs at least one yield curve";
+    double h;
+    if (!(yield(0.0, 0.0, h) > 0)) return "LAW36 initial yield stress must be > 0";
   }
   return {};
 }
 
-double ShellMaterial::yield(double eps_p, double epsdot, double& slope) const {
-  if (law == ShellLaw::JohnsonCook) {
-    double sy, h;
-    if (eps_p > 0) {
-      const double pw = std::pow(eps_p, n);
-      sy = a + b * pw;
-      h = b * n * pw / eps_p;
-    } else {
-      sy = a;
-      h = (n == 1.0) ? b : (n < 1.0 ? b * 1e6 : 0.0);  // slope at 0 (n < 1: steep, bounded)
-    }
-    if (c > 0 && epsdot > epsdot0) {
-      const double f = 1.0 + c * std::log(epsdot / epsdot0);
-      sy *= f;
-      h *= f;
-    }
-    if (sy > sig_max) {
-      sy = sig_max;
-      h = 0;
-    }
-    slope = h;
-    return sy;
-  }
-  // LAW36: linear interpolation, constant beyond the ends.
-  const auto& x = curve_eps;
-  const auto& y = curve_sig;
-  if (eps_p <= x.front() || x.size() == 1) {
-    slope = x.size() > 1 ? (y[1] - y[0]) / (x[1] - x[0]) : 0.0;
-    return y.front();
-  }
-  if (eps_p >= x.back()) {
-    slope = 0;
-    return y.back();
-  }
-  const auto it = std::upper_bound(x.begin(), x.end(), eps_p);
-  const std::size_t i = static_cast<std::size_t>(it - x.begin()) - 1;
-  slope = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
-  return y[i] + slope * (eps_p - x[i]);
+bool ShellMaterial::rate_dependent() const {
+  if (law == ShellLaw::JohnsonCook) return plasticity.jc.c > 0;
+  if (law == ShellLaw::Tabulated) return plasticity.tab.curves.size() > 1;
+  return false;
 }
 
 namespace {
@@ -141,7 +109,7 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
   epsp += r.depsp;
   // Elastic thickness strain plus plastic incompressibility: deps_p_zz = -g S / 3.
   r.dezz = -nu / E * (S - S_old) - g * S / 3.0;
-  if (epsp >= m.eps_p_max) r.failed_now = true;
+  if (epsp >= m.eps_p_max()) r.failed_now = true;
   return r;
 }
 
@@ -185,7 +153,7 @@ PointResult update_point(const ShellMaterial& m, const double de[3], double dt, 
     return res;
   }
   double epsdot = 0;
-  if (m.c > 0 && dt > 0) {
+  if (dt > 0 && m.rate_dependent()) {
     const double eq2 = 4.0 / 3.0 * (de[0] * de[0] + de[1] * de[1] + de[0] * de[1]) +
                        de[2] * de[2] / 3.0;
     epsdot = std::sqrt(eq2) / dt;

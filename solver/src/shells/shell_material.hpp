@@ -5,9 +5,9 @@
 //  - LAW1  isotropic hypoelastic (plane-stress Hooke).
 //  - LAW2  Johnson-Cook J2 plasticity, yield sigma_y = a + b eps_p^n (capped by SIG_max0),
 //          strain-rate term c ln(epsdot/epsdot0) when c > 0.
-//  - LAW36 J2 plasticity with a tabulated yield curve sigma_y(eps_p) (linear
-//          interpolation, constant extrapolation beyond the last abscissa, scaled).
-//    Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
+//  - LAW36 J2 plasticity with tabulated yield curves sigma_y(eps_p) per strain rate.
+//    The hardening laws are the engine's (hbm/solver/material/hardening.hpp, shared with
+//    the solids; the rate is the equivalent total strain rate of the point). Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
 //    algorithm for plane stress elastoplasticity", IJNME 22: 649-670 (Simo & Hughes,
 //    Computational Inelasticity, section 3.4): the trial stress is relaxed along the
 //    plane-stress projected flow direction and a scalar Newton iteration (safeguarded by
@@ -17,6 +17,8 @@
 //    recursive update of the hereditary integral (Herrmann & Peterson 1968 /
 //    Radioss LAW34); the thickness strain increment is solved so that sigma_zz = 0.
 #pragma once
+
+#include "hbm/solver/material/hardening.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -31,14 +33,7 @@ struct ShellMaterial {
   ShellLaw law = ShellLaw::Elastic;
   std::int64_t id = 0;
   double rho = 0, E = 0, nu = 0;  // [density], [stress], [-]
-  // LAW2
-  double a = 0, b = 0, n = 1;
-  double c = 0, epsdot0 = 1;  // strain-rate term (c = 0: none)
-  double sig_max = std::numeric_limits<double>::infinity();
-  // LAW2 / LAW36: equivalent plastic strain at failure (infinity: none)
-  double eps_p_max = std::numeric_limits<double>::infinity();
-  // LAW36: yield curve, abscissa plastic strain, ordinate stress (already scaled)
-  std::vector<double> curve_eps, curve_sig;
+  PlasticityLaw plasticity;  // LAW2 / LAW36 hardening and EPS_p_max (engine's)
   // LAW34
   double K = 0, G0 = 0, Ginf = 0, beta = 0;
 
@@ -51,9 +46,16 @@ struct ShellMaterial {
   double shear_modulus() const { return young() / (2.0 * (1.0 + poisson())); }
   // Plate wave speed c = sqrt(E / (rho (1 - nu^2))) [length/time].
   double plate_wave_speed() const;
+  // Equivalent plastic strain at failure (infinity: none).
+  double eps_p_max() const { return plastic() ? plasticity.eps_p_max : std::numeric_limits<double>::infinity(); }
   // Yield stress and hardening slope d sigma_y / d eps_p at plastic strain eps_p,
-  // for a total strain rate epsdot (LAW2 with c > 0).
-  double yield(double eps_p, double epsdot, double& slope) const;
+  // for an equivalent total strain rate epsdot.
+  double yield(double eps_p, double epsdot, double& slope) const {
+    slope = plasticity.slope(eps_p, epsdot);
+    return plasticity.yield_stress(eps_p, epsdot);
+  }
+  // True when the yield stress depends on the strain rate (then the rate is computed).
+  bool rate_dependent() const;
 
   // Checks the parameters; returns an empty string when valid, else what is wrong.
   std::string_view check() const;

@@ -25,9 +25,10 @@ inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, d
                                 double* stress, double* epsp, double* hist, ThicknessResult& r) {
   const double ht = 0.5 * t;
   const int nh = m.n_history();
+  const double eps_fail = m.eps_p_max();
   for (int p = 0; p < s.n_points; ++p) {
     double* sp = stress + 3 * p;
-    if (epsp[p] >= m.eps_p_max) continue;  // failed point
+    if (epsp[p] >= eps_fail) continue;  // failed point
     const double z = s.zeta[p] * ht;
     const double de[3] = {dem[0] + z * dk[0], dem[1] + z * dk[1], dem[2] + z * dk[2]};
     PointStress st{sp[0], sp[1], sp[2]};
