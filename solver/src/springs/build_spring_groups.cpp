@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Builder of spring groups: /SPRING elements, one group per part, property /PROP/TYPE4
+// (axial), /PROP/TYPE8 (general 6-DOF) or /PROP/TYPE13 (beam-type). Reads each DOF's law
+// (K C A B D / fct_id1 H fct_id2 fct_id3 fct_id4 dmin dmax / F E Ascale Hscale), resolves
+// its /FUNCT curves, adds half the spring mass (and inertia) to each node. Registered in
+// solver/src/build/builders.def.
+//
+// Card layouts (Radioss 2024): TYPE4 line 1 `Mass sens_id Isflag Ileng`, then one DOF
+// block; TYPE8 and TYPE13 line 1 `Mass Inertia skew_id sens_id Isflag Ifail Ileng
+// Ifail2`, then six DOF blocks (X, Y, Z, RX, RY, RZ), each three lines. Not supported
+// (deck error naming the field): sensors, skews, H = 3, 5, 6, per-length input on a
+// zero-length spring.
+#include "hbm/solver/build_context.hpp"
+#include "springs/spring_group_factory.hpp"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace hbm::solver {
+
+namespace {
+
+using springs::CurveView;
+using springs::SpringDofLaw;
+using springs::SpringProperty;
+using springs::SpringType;
+
+const hbm::deck::Row& line_or_last(const hbm::deck::Card& c, std::size_t k) {
+  return c.lines.size() > k ? c.lines[k] : c.lines.back();
+}
+
+CurveView view_of(const FunctionCurve* f) {
+  if (!f) return {};
+  return {f->x().data(), f->y().data(), f->n_points()};
+}
+
+double default_one(double v) { return v == 0.0 ? 1.0 : v; }
+
+// One DOF block starting at fixed line `k` (K line), `k+1` (functions), `k+2` (scales).
+bool read_dof(BuildContext& ctx, const hbm::deck::Card& c, std::size_t k, SpringDofLaw& law,
+              bool rotational) {
+  bool ok = true;
+  law.K = c.real(k, "K");
+  law.C = c.real(k, "C");
+  law.A = default_one(c.real(k, "A"));
+  law.B = c.real(k, "B");
+  law.D = default_one(c.real(k, "D"));
+  const int h = static_cast<int>(c.integer(k + 1, "H"));
+  law.delta_min = c.real(k + 1, "dmin");
+  law.delta_max = c.real(k + 1, "dmax");
+  law.Fv = default_one(c.real(k + 2, "F"));
+  law.E = c.real(k + 2, "E");
+  law.Ascale = default_one(c.real(k + 2, "Ascale"));
+  law.Hscale = default_one(c.real(k + 2, "Hscale"));
+  const bool has_line = c.lines.size() > k + 1;
+  const hbm::deck::Row& fl = line_or_last(c, k + 1);
+  auto fn = [&](std::string_view field) -> CurveView {
+    if (!has_line || c.integer(fl, field) == 0) return {};
+    const FunctionCurve* f = ctx.require_function(c, fl, field, true);
+    if (!f) ok = false;
+    return view_of(f);
+  };
+  law.f1 = fn("fct_id1");
+  law.g2 = fn("fct_id2");
+  law.f3 = fn("fct_id3");
+  law.h4 = fn("fct_id4");
+  if (!springs::is_supported_hardening(h)) {
+    ctx.error(c, fl, "H", "hardening flag H = " + std::to_string(h) +
+                              " is not supported (0, 1, 2, 4, 7, 8 are)");
+    return false;
+  }
+  law.H = static_cast<springs::Hardening>(h);
+  if (h != 0 && law.f1.empty()) {
+    ctx.error(c, fl, "fct_id1", "H = " + std::to_string(h) + " needs a loading function fct_id1");
+    ok = false;
+  }
+  if ((h == 4 || h == 7) && law.f3.empty()) {
+    ctx.error(c, fl, "fct_id3", "H = " + std::to_string(h) + " needs the " +
+                                    (h == 4 ? "lower yield" : "unloading") + " function fct_id3");
+    ok = false;
+  }
+  if ((h == 1 || h == 2 || h == 4 || h == 7) && !(law.K > 0)) {
+    ctx.error(c, line_or_last(c, k), "K", "H = " + std::to_string(h) +
+                                              " needs the unloading stiffness K > 0");
+    ok = false;
+  }
+  if (law.B != 0 && !(law.D > 0)) {
+    ctx.error(c, line_or_last(c, k), "D", "the logarithmic rate term needs D > 0");
+    ok = false;
+  }
+  (void)rotational;
+  return ok;
+}
+
+// Resolve a /PROP/TYPE4, 8 or 13 card.
+bool read_property(BuildContext& ctx, const hbm::deck::Card& c, SpringProperty& p) {
+  const std::string_view kw = c.keyword();
+  p.id = c.id;
+  p.title = c.title;
+  p.type = kw == "/PROP/TYPE4" ? SpringType::Axial : kw == "/PROP/TYPE8" ? SpringType::General : SpringType::Beam;
+  bool ok = true;
+  p.mass = c.real(0, "Mass");
+  if (c.integer(0, "sens_id") != 0) {
+    ctx.error(c, c.lines.at(0), "sens_id", "spring activation by sensor is not supported (use 0)");
+    ok = false;
+  }
+  p.per_length = c.integer(0, "Ileng") == 1;
+  if (p.type == SpringType::Axial) {
+    p.dofs.resize(1);
+    ok = read_dof(ctx, c, 1, p.dofs[0], false) && ok;
+  } else {
+    p.inertia = c.real(0, "Inertia");
+    if (c.integer(0, "skew_id") != 0) {
+      ctx.error(c, c.lines.at(0), "skew_id", "skew frames are not supported (use 0: global axes)");
+      ok = false;
+    }
+    p.dofs.resize(6);
+    for (std::size_t d = 0; d < 6; ++d) ok = read_dof(ctx, c, 1 + 3 * d, p.dofs[d], d >= 3) && ok;
+    const bool rot = p.type == SpringType::Beam || springs::has_rotational_law(p);
+    if (rot && !(p.inertia > 0)) {
+      ctx.error(c, c.lines.at(0), "Inertia",
+                "rotational DOFs need the spring inertia Inertia > 0 (half goes to each node)");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+struct PendingGroup {
+  const hbm::deck::Card* first_card = nullptr;
+  std::vector<Index> connectivity;
+  std::vector<std::int64_t> ids;
+};
+
+}  // namespace
+
+void build_spring_groups(BuildContext& ctx) {
+  ctx.claim("/SPRING");
+  std::map<Index, PendingGroup> by_part;  // ordered by part index: deterministic groups
+  for (const hbm::deck::Card* c : ctx.starter().cards_of("/SPRING")) {
+    const Index part = ctx.part_index(c->id);
+    if (part == kNoIndex) {
+      ctx.error(*c, "no part " + std::to_string(c->id));
+      continue;
+    }
+    const Part& p = ctx.part(part);
+    const std::string_view pk = p.prop_card ? p.prop_card->keyword() : std::string_view{};
+    if (pk != "/PROP/TYPE4" && pk != "/PROP/TYPE8" && pk != "/PROP/TYPE13") {
+      ctx.error(*c, "part " + std::to_string(p.id) + " of spring elements needs a /PROP/TYPE4, "
+                    "/PROP/TYPE8 or /PROP/TYPE13 property (has " +
+                    (pk.empty() ? std::string("none") : std::string(pk)) + ")");
+      continue;
+    }
+    PendingGroup& g = by_part[part];
+    if (!g.first_card) g.first_card = c;
+    for (std::size_t r = 0; r < c->n_rows(); ++r) {
+      const hbm::deck::Row& row = c->row(r);
+      const Index n1 = ctx.require_node(*c, row, "n1");
+      const Index n2 = ctx.require_node(*c, row, "n2");
+      if (c->integer(row, "skew_id") != 0)
+        ctx.error(*c, row, "skew_id", "skew frames are not supported (use 0)");
+      if (n1 == kNoIndex || n2 == kNoIndex) continue;
+      if (n1 == n2) {
+        ctx.error(*c, row, "n2", "spring " + std::to_string(c->integer(row, "id")) + " joins node " +
+                                     std::to_string(c->integer(row, "n1")) + " to itself");
+        continue;
+      }
+      g.connectivity.push_back(n1);
+      g.connectivity.push_back(n2);
+      g.ids.push_back(c->integer(row, "id"));
+    }
+  }
+  std::map<std::int64_t, SpringProperty> props;
+  for (auto& [part, pending] : by_part) {
+    const Part& p = ctx.part(part);
+    auto it = props.find(p.prop_id);
+    if (it == props.end()) {
+      SpringProperty sp;
+      if (!read_property(ctx, *p.prop_card, sp)) continue;
+      it = props.emplace(p.prop_id, std::move(sp)).first;
+    }
+    const SpringProperty& sp = it->second;
+    NodalState& nodes = ctx.nodes();
+    auto group = springs::make_spring_group(sp, part, pending.connectivity, pending.ids, nodes);
+    group->part_title = p.title;
+    bool ok = true;
+    for (std::size_t e = 0; e < group->n_elements; ++e) {
+      const double l0 = group->length0[e];
+      const bool zero = !(l0 > 0);
+      if (zero && (sp.type == SpringType::Axial || sp.type == SpringType::Beam || sp.per_length)) {
+        ctx.error(*pending.first_card,
+                  "spring " + std::to_string(group->element_id[e]) + " has zero initial length: " +
+                      (sp.type == SpringType::General
+                           ? "per-length input (Ileng = 1) needs a length"
+                           : "its axis is undefined (use /PROP/TYPE8 for coincident nodes)"));
+        ok = false;
+        continue;
+      }
+      const auto share = springs::spring_nodal_share(sp, l0);
+      for (int k = 0; k < 2; ++k) {
+        const Index n = group->connectivity[2 * e + static_cast<std::size_t>(k)];
+        ctx.add_nodal_mass(n, share.mass);
+        if (group->has_rotation_slots()) ctx.add_nodal_inertia(n, share.inertia);
+      }
+      ctx.add_part_mass(part, 2.0 * share.mass);
+    }
+    if (ok) ctx.add_group(std::move(group));
+  }
+}
+
+}  // namespace hbm::solver
