@@ -171,10 +171,18 @@ void PenaltyContact::sort(const NodalState& nodes) {
       b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y), std::min(b.lo.z, q.z)};
       b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y), std::max(b.hi.z, q.z)};
     }
-    // One-sided faces also catch nodes that went past them, down to `depth`.
-    const double grow = inflate + (surf_.one_sided[s] ? surf_.depth[s] : 0.0);
-    b.lo -= V3{grow, grow, grow};
-    b.hi += V3{grow, grow, grow};
+    // One-sided faces also catch nodes that went past them, down to `depth` behind the
+    // face: the box also holds the corners moved by -depth along the face normal.
+    if (surf_.one_sided[s]) {
+      const V3 nrm = normalized(segment_area_vector(c, surf_.is_triangle(s)));
+      for (const V3& q0 : c) {
+        const V3 q = q0 - surf_.depth[s] * nrm;
+        b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y), std::min(b.lo.z, q.z)};
+        b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y), std::max(b.hi.z, q.z)};
+      }
+    }
+    b.lo -= V3{inflate, inflate, inflate};
+    b.hi += V3{inflate, inflate, inflate};
     size_sum += (b.hi.x - b.lo.x + b.hi.y - b.lo.y + b.hi.z - b.lo.z) / 3.0;
     boxes_[s] = b;
   }
@@ -212,6 +220,30 @@ double PenaltyContact::pair_power(const NodalState& nodes, std::size_t i, V3 f, 
   return dot(f, node_v(nodes, secondary_[i]) - vc);
 }
 
+void PenaltyContact::update_segment_cache(const NodalState& nodes) {
+  const std::size_t ns = surf_.size();
+  seg_centre_.resize(ns);
+  seg_normal_.resize(ns);
+  seg_warp_.resize(ns);
+  seg_radius_.resize(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    const std::array<V3, 4> c = corners(nodes, surf_.nodes[s]);
+    const bool tri = surf_.is_triangle(s);
+    const V3 ctr = tri ? (1.0 / 3.0) * (c[0] + c[1] + c[2]) : 0.25 * (c[0] + c[1] + c[2] + c[3]);
+    const V3 n = normalized(segment_area_vector(c, tri));
+    double w = 0, r2 = 0;
+    for (const V3& q : c) {
+      const V3 d = q - ctr;
+      w = std::max(w, std::abs(dot(d, n)));
+      r2 = std::max(r2, dot(d, d));
+    }
+    seg_centre_[s] = ctr;
+    seg_normal_[s] = n;
+    seg_warp_[s] = w * (1 + 1e-12) + 1e-300;
+    seg_radius_[s] = std::sqrt(r2) * (1 + 1e-12);
+  }
+}
+
 void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   resultant_ = {};
   elastic_energy_ = 0;
@@ -230,6 +262,7 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   }
   if (needs_sort(nodes)) sort(nodes);
   friction_stored_ = 0;
+  update_segment_cache(nodes);
   const double mu = p_.fric;
 
   for (std::size_t i = 0; i < secondary_.size(); ++i) {
@@ -243,6 +276,18 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     for (std::uint32_t k = cand_start_[i]; k < cand_start_[i + 1]; ++k) {
       const Index seg = cand_segment_[k];
       const auto su = static_cast<std::size_t>(seg);
+      // Cheap rejection on the segment's mean plane and bounding sphere (conservative:
+      // the warp is the largest corner distance to the mean plane).
+      {
+        const double g0 = gap_of_pair(i, seg);
+        const V3 d0 = xs - seg_centre_[su];
+        const double dn = dot(d0, seg_normal_[su]);
+        const double w = seg_warp_[su];
+        const double below = surf_.one_sided[su] ? surf_.depth[su] : g0;
+        if (dn > g0 + w || dn < -(below + w)) continue;
+        const double r = seg_radius_[su] + g0;
+        if (dot(d0, d0) - dn * dn > r * r) continue;
+      }
       const SegmentProjection pr = project_on_segment(xs, corners(nodes, surf_.nodes[su]), surf_.is_triangle(su));
       const double g = gap_of_pair(i, seg);
       const V3 d = xs - pr.point;

@@ -102,6 +102,7 @@ class PenaltyContact {
  private:
   void sort(const NodalState& nodes);
   bool needs_sort(const NodalState& nodes) const;
+  void update_segment_cache(const NodalState& nodes);
   double pair_power(const NodalState& nodes, std::size_t slot, V3 f, Index seg,
                     const std::array<double, 4>& w) const;
 
@@ -127,6 +128,9 @@ class PenaltyContact {
   BucketGrid grid_;
   std::vector<Box> boxes_;
   std::size_t n_sorts_ = 0;
+  // Per-cycle segment geometry for the cheap rejection test.
+  std::vector<V3> seg_centre_, seg_normal_;
+  std::vector<double> seg_warp_, seg_radius_;
 
   // Friction state per secondary node.
   std::vector<V3> tangential_;
