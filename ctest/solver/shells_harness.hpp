@@ -25,6 +25,7 @@ struct ShellHarness {
   std::vector<std::array<std::uint8_t, 6>> fixed;
   std::vector<std::array<double, 6>> reaction;  // reaction on prescribed DOFs, last step
   ShellGroupData g;
+  std::vector<double> sfx, sfy, sfz, smx, smy, smz;  // slot buffers
   double time = 0, dt_last = 0;
   double w_ext = 0;       // external work (loads + reactions of prescribed DOFs)
   double damping = 0;     // mass-proportional damping coefficient [1/time]
@@ -49,6 +50,7 @@ struct ShellHarness {
   // Allocates the group and lumps masses / inertias.
   void finish() {
     g.allocate();
+    for (auto* a : {&sfx, &sfy, &sfz, &smx, &smy, &smz}) a->assign(g.n * g.nodes_per_element, 0.0);
     const int npe = g.nodes_per_element;
     for (std::size_t e = 0; e < g.n; ++e) {
       const double A = area(e);
@@ -80,15 +82,16 @@ struct ShellHarness {
   }
   // Element forces at the current state (dt: step the velocities acted over), assembled.
   ShellKernelTotals forces(double dt) {
-    ShellKernelTotals tot = g.kind == ShellKind::QuadBT ? quad_bt_forces(g, view(), dt, 0, g.n)
-                                                         : tria_dkt_forces(g, view(), dt, 0, g.n);
+    const ShellSlotOut out{sfx.data(), sfy.data(), sfz.data(), smx.data(), smy.data(), smz.data()};
+    ShellKernelTotals tot = g.kind == ShellKind::QuadBT ? quad_bt_forces(g, view(), out, dt, 0, g.n)
+                                                         : tria_dkt_forces(g, view(), out, dt, 0, g.n);
     for (auto& a : f) a.fill(0.0);
-    const int npe = g.nodes_per_element;
-    for (std::size_t e = 0; e < g.n; ++e)
-      for (int k = 0; k < npe; ++k) {
-        const auto n = g.conn[e * npe + k];
-        for (int c = 0; c < 6; ++c) f[n][c] += g.force[(e * npe + k) * 6 + c];
-      }
+    const std::size_t nslot = g.n * static_cast<std::size_t>(g.nodes_per_element);
+    for (std::size_t s = 0; s < nslot; ++s) {
+      auto& fn = f[static_cast<std::size_t>(g.conn[s])];
+      fn[0] += sfx[s]; fn[1] += sfy[s]; fn[2] += sfz[s];
+      fn[3] += smx[s]; fn[4] += smy[s]; fn[5] += smz[s];
+    }
     return tot;
   }
   double kinetic() const {

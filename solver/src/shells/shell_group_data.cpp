@@ -21,7 +21,6 @@ void ShellGroupData::allocate() {
   ehg.assign(n, 0.0);
   dt_elem.assign(n, 1e300);
   area.assign(n, 0.0);
-  force.assign(n * static_cast<std::size_t>(nodes_per_element) * 6, 0.0);
 }
 
 double ShellGroupData::von_mises(std::size_t e) const {

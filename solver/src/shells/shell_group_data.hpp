@@ -50,8 +50,6 @@ struct ShellGroupData {
   std::vector<double> ehg;             // cumulative hourglass energy [energy]
   std::vector<double> dt_elem;         // stable step L_c / c of the last evaluation [time]
   std::vector<double> area;            // current area [length^2]
-  std::vector<double> force;           // n * nodes_per_element * 6: force and moment ON
-                                       // each node, global frame [force], [force*length]
 
   int extra_per_element() const { return kind == ShellKind::QuadBT ? 7 : 9; }
   // Sizes every array for n elements (conn, user_id, part, thick must be filled first).
@@ -61,17 +59,32 @@ struct ShellGroupData {
   double max_epsp(std::size_t e) const;
 };
 
-// Per-call totals returned by the kernels.
+// Where the kernels write, per slot s = e * nodes_per_element + k: the force and moment
+// the element exerts ON its node k (= minus the internal force), global frame
+// [force], [force*length]. Deleted elements write zeros.
+struct ShellSlotOut {
+  double *fx, *fy, *fz;
+  double *mx, *my, *mz;
+};
+
+// Per-call totals returned by the kernels (sums over the elements of the call, in
+// element order).
 struct ShellKernelTotals {
-  double dt_min = 1e300;  // smallest stable element step [time]
-  std::size_t newly_deleted = 0;
+  double dt_min = 1e300;          // smallest stable element step L_c / c [time]
+  std::int64_t dt_element = -1;   // its element (local index)
+  std::int64_t inverted = -1;     // lowest element with non-positive area, or -1
+  double de_int = 0;              // internal energy increment [energy]
+  double de_hg = 0;               // hourglass energy increment [energy]
+  std::size_t newly_deleted = 0;  // elements deleted in this call
 };
 
 // Element forces of elements [e0, e1): reads the nodal view, updates the element state
-// with the step dt (the step the velocities act over), writes `force` and the energies.
-ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
-                                 std::size_t e0, std::size_t e1);
-ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
-                                  std::size_t e0, std::size_t e1);
+// with the step dt (the step the velocities act over), writes the slots and energies.
+ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
+                                 const ShellSlotOut& out, double dt, std::size_t e0,
+                                 std::size_t e1);
+ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
+                                  const ShellSlotOut& out, double dt, std::size_t e0,
+                                  std::size_t e1);
 
 }  // namespace hbm::solver::shells

@@ -33,8 +33,9 @@
 
 namespace hbm::solver::shells {
 
-ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
-                                 std::size_t e0, std::size_t e1) {
+ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
+                                 const ShellSlotOut& out, double dt, std::size_t e0,
+                                 std::size_t e1) {
   ShellKernelTotals tot;
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
@@ -45,9 +46,13 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, do
   static constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
 
   for (std::size_t e = e0; e < e1; ++e) {
-    double* f = &g.force[e * 24];
+    const std::size_t s0 = e * 4;
+    auto zero_slots = [&] {
+      for (std::size_t s = s0; s < s0 + 4; ++s)
+        out.fx[s] = out.fy[s] = out.fz[s] = out.mx[s] = out.my[s] = out.mz[s] = 0.0;
+    };
     if (g.deleted[e]) {
-      std::fill(f, f + 24, 0.0);
+      zero_slots();
       g.dt_elem[e] = 1e300;
       continue;
     }
@@ -98,6 +103,11 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, do
       vz[i] = V[i][0] * e3[0] + V[i][1] * e3[1] + V[i][2] * e3[2];
     }
     const double A = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (x[3] - x[1]) * (y[2] - y[0]));
+    if (!(A > 0)) {  // folded or degenerate: reported, the core stops the run
+      if (tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
+      zero_slots();
+      continue;
+    }
     const double i2A = 0.5 / A;
     const double B1[4] = {(y[1] - y[3]) * i2A, (y[2] - y[0]) * i2A, (y[3] - y[1]) * i2A, (y[0] - y[2]) * i2A};
     const double B2[4] = {(x[3] - x[1]) * i2A, (x[0] - x[2]) * i2A, (x[1] - x[3]) * i2A, (x[2] - x[0]) * i2A};
@@ -170,14 +180,18 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, do
       mx += zw[i] * fy;  // rigid-link moments (warping)
       my -= zw[i] * fx;
       // Force ON the node = minus the internal force, back to the global frame.
-      double* fi = f + 6 * i;
-      for (int k = 0; k < 3; ++k) {
-        fi[k] = -(fx * ex[k] + fy * ey[k] + fz * e3[k]);
-        fi[3 + k] = -(mx * ex[k] + my * ey[k]);
-      }
+      const std::size_t s = s0 + static_cast<std::size_t>(i);
+      out.fx[s] = -(fx * ex[0] + fy * ey[0] + fz * e3[0]);
+      out.fy[s] = -(fx * ex[1] + fy * ey[1] + fz * e3[1]);
+      out.fz[s] = -(fx * ex[2] + fy * ey[2] + fz * e3[2]);
+      out.mx[s] = -(mx * ex[0] + my * ey[0]);
+      out.my[s] = -(mx * ex[1] + my * ey[1]);
+      out.mz[s] = -(mx * ex[2] + my * ey[2]);
     }
     g.eint[e] += dE;
     g.ehg[e] += dEhg;
+    tot.de_int += dE;
+    tot.de_hg += dEhg;
     if (sec.thickness_change) g.thick[e] = t * (1.0 + tr.dezz);
     g.area[e] = A;
     double lmax2 = 0;
@@ -188,8 +202,11 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv, do
       lmax2 = std::max(lmax2, l2);
     }
     g.dt_elem[e] = A / std::sqrt(lmax2) / cwave;
-    tot.dt_min = std::min(tot.dt_min, g.dt_elem[e]);
-    if (nf >= np) {
+    if (g.dt_elem[e] < tot.dt_min) {
+      tot.dt_min = g.dt_elem[e];
+      tot.dt_element = static_cast<std::int64_t>(e);
+    }
+    if (nf >= sec.points_to_delete()) {
       g.deleted[e] = 1;
       ++tot.newly_deleted;
     }

@@ -26,6 +26,10 @@ struct ShellSection {
   // /PROP/TYPE1 line 2; Radioss defaults 0.01 when blank.
   double hm = 0.01, hf = 0.01, hr = 0.01;
   bool thickness_change = false;  // Ithick = 1: t follows the membrane strain
+  // Deletion rule: the element is deleted when this many of its through-thickness points
+  // have failed (from /PROP/TYPE1 P_thick_fail: ceil(P_thick_fail N); 0 = all N points).
+  int fail_points = 0;
+  int points_to_delete() const { return fail_points > 0 ? fail_points : n_points; }
 
   // Fills zeta/weight for n points; returns false when n is outside 1..10.
   bool set_points(int n);

@@ -56,8 +56,9 @@ constexpr int kSide[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 
 }  // namespace
 
-ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, double dt,
-                                  std::size_t e0, std::size_t e1) {
+ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
+                                 const ShellSlotOut& out, double dt, std::size_t e0,
+                                 std::size_t e1) {
   ShellKernelTotals tot;
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
@@ -67,9 +68,13 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, d
   const double cwave = mat.plate_wave_speed();
 
   for (std::size_t e = e0; e < e1; ++e) {
-    double* f = &g.force[e * 18];
+    const std::size_t s0 = e * 3;
+    auto zero_slots = [&] {
+      for (std::size_t s = s0; s < s0 + 3; ++s)
+        out.fx[s] = out.fy[s] = out.fz[s] = out.mx[s] = out.my[s] = out.mz[s] = 0.0;
+    };
     if (g.deleted[e]) {
-      std::fill(f, f + 18, 0.0);
+      zero_slots();
       g.dt_elem[e] = 1e300;
       continue;
     }
@@ -94,6 +99,11 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, d
     ez[2] = r21[0] * r31[1] - r21[1] * r31[0];
     const double nz = std::sqrt(ez[0] * ez[0] + ez[1] * ez[1] + ez[2] * ez[2]);
     const double A = 0.5 * nz;
+    if (!(A > 0)) {  // degenerate (collapsed) triangle: reported, the core stops the run
+      if (tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
+      zero_slots();
+      continue;
+    }
     for (double& c : ez) c /= nz;
     const double l21 = std::sqrt(r21[0] * r21[0] + r21[1] * r21[1] + r21[2] * r21[2]);
     for (int k = 0; k < 3; ++k) ex[k] = r21[k] / l21;
@@ -211,13 +221,17 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, d
       const double fz = Fw[i];
       const double mx = -Fy[i];  // beta_y = -th_x
       const double my = Fx[i];   // beta_x = th_y
-      double* fi = f + 6 * i;
-      for (int k = 0; k < 3; ++k) {
-        fi[k] = -(fx * ex[k] + fy * ey[k] + fz * ez[k]);
-        fi[3 + k] = -(mx * ex[k] + my * ey[k]);
-      }
+      const std::size_t s = s0 + static_cast<std::size_t>(i);
+      out.fx[s] = -(fx * ex[0] + fy * ey[0] + fz * ez[0]);
+      out.fy[s] = -(fx * ex[1] + fy * ey[1] + fz * ez[1]);
+      out.fz[s] = -(fx * ex[2] + fy * ey[2] + fz * ez[2]);
+      out.mx[s] = -(mx * ex[0] + my * ey[0]);
+      out.my[s] = -(mx * ex[1] + my * ey[1]);
+      out.mz[s] = -(mx * ex[2] + my * ey[2]);
     }
-    g.eint[e] += A * tr.dE + A3 * dEdev;
+    const double dE = A * tr.dE + A3 * dEdev;
+    g.eint[e] += dE;
+    tot.de_int += dE;
     if (sec.thickness_change) g.thick[e] = t * (1.0 + tr.dezz);
     g.area[e] = A;
     double lmax2 = 0;
@@ -228,8 +242,11 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv, d
       lmax2 = std::max(lmax2, l2);
     }
     g.dt_elem[e] = 2.0 * A / std::sqrt(lmax2) / cwave;
-    tot.dt_min = std::min(tot.dt_min, g.dt_elem[e]);
-    if (nf >= np) {
+    if (g.dt_elem[e] < tot.dt_min) {
+      tot.dt_min = g.dt_elem[e];
+      tot.dt_element = static_cast<std::int64_t>(e);
+    }
+    if (nf >= sec.points_to_delete()) {
       g.deleted[e] = 1;
       ++tot.newly_deleted;
     }
