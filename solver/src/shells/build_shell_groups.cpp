@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Builder of shell groups: /SHELL (4-node Belytschko-Tsay) and /SH3N (3-node CST+DKT)
+// cards, one group per (keyword, part); material from the part (/MAT/LAW1, LAW2, LAW34,
+// LAW36, plane stress), section from /PROP/TYPE1:
+//   line 1  Ishell (0-4: Belytschko-Tsay; others are refused), Ish3n (0, 1, 2, 30, 31:
+//           CST+DKT), Idrill (0; 1 accepted with a warning: no drilling stiffness),
+//           P_thick_fail (fraction of the N points that must fail to delete the shell;
+//           0 = all points),
+//   line 2  Hm Hf Hr (hourglass, 0 -> 0.01 as Radioss), Dm Dn (must be 0),
+//   line 3  N (0 -> 5; 1 = membrane), Thick, Ashear (0 -> 5/6), Ithick (1: thickness
+//           follows the membrane strain), Iplas (plane-stress return is always iterative).
+// Thickness per element: the element row's thick if > 0, else the /PART thick if > 0,
+// else the property's. Lumped mass rho t A / npe and rotational inertia
+// m (t^2 + A) / 12 per node; shell nodes carry rotational DOFs.
+// Registered in solver/src/build/builders.def.
+#include "hbm/solver/build_context.hpp"
+#include "shells/shell_element_group.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace hbm::solver {
+
+namespace {
+
+using shells::ShellElementGroup;
+using shells::ShellLaw;
+using shells::ShellMaterial;
+using shells::ShellSection;
+
+bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMaterial& out) {
+  const std::string_view kw = m.keyword();
+  out.id = m.id;
+  out.rho = m.real(0, "rho");
+  const double inf = std::numeric_limits<double>::infinity();
+  if (kw == "/MAT/LAW1") {
+    out.law = ShellLaw::Elastic;
+    out.E = m.real(1, "E");
+    out.nu = m.real(1, "nu");
+  } else if (kw == "/MAT/LAW2") {
+    out.law = ShellLaw::JohnsonCook;
+    out.E = m.real(1, "E");
+    out.nu = m.real(1, "nu");
+    if (m.integer(1, "Iflag") != 0) {
+      ctx.error(m, "Iflag != 0 (yield/UTS input) is not supported on shells; give a, b, n");
+      return false;
+    }
+    auto& pl = out.plasticity;
+    pl.kind = PlasticityLaw::Kind::JohnsonCook;
+    pl.jc.a = m.real(2, "a");
+    pl.jc.b = m.real(2, "b");
+    pl.jc.n = m.real(2, "n");
+    const double epm = m.real(2, "EPS_p_max");
+    pl.eps_p_max = epm > 0 ? epm : inf;
+    const double smax = m.real(2, "SIG_max0");
+    pl.jc.sig_max = smax > 0 ? smax : inf;
+    pl.jc.c = m.real(3, "c");
+    pl.jc.eps_dot0 = m.real(3, "EPS_DOT_0");
+  } else if (kw == "/MAT/LAW34") {
+    out.law = ShellLaw::Viscoelastic;
+    out.K = m.real(1, "K");
+    out.G0 = m.real(2, "G0");
+    out.Ginf = m.real(2, "Ginf");
+    out.beta = m.real(2, "beta");
+    if (m.real(3, "P0") != 0.0) {
+      ctx.error(m, "foam air pressure P0 != 0 is not supported on shells (tissue: 0)");
+      return false;
+    }
+  } else if (kw == "/MAT/LAW36") {
+    out.law = ShellLaw::Tabulated;
+    out.E = m.real(1, "E");
+    out.nu = m.real(1, "nu");
+    if (m.real(1, "EPS_t") != 0.0 || m.real(1, "EPS_m") != 0.0 || m.real(2, "Chard") != 0.0 ||
+        m.integer(3, "fct_IDp") != 0 || m.integer(3, "fct_IDE") != 0) {
+      ctx.error(m, "LAW36 on shells supports E, nu, EPS_p_max and yield curves only "
+                   "(EPS_t, EPS_m, Chard, fct_IDp, fct_IDE must be 0)");
+      return false;
+    }
+    auto& pl = out.plasticity;
+    pl.kind = PlasticityLaw::Kind::Tabulated;
+    const double epm = m.real(1, "EPS_p_max");
+    pl.eps_p_max = epm > 0 ? epm : inf;
+    const auto n = m.integer(2, "N_funct");
+    for (int k = 1; k <= n; ++k) {
+      const std::string f = "fct_ID" + std::to_string(k);
+      const std::int64_t fid = m.integer(4, f);
+      const FunctionCurve* fc = ctx.function(fid);
+      if (!fc) {
+        ctx.error(m, m.lines.size() > 4 ? m.lines[4] : m.lines.back(), f,
+                  "no function " + std::to_string(fid));
+        return false;
+      }
+      pl.tab.curves.push_back(fc);
+      pl.tab.scales.push_back(m.real(5, "Fscale" + std::to_string(k)));
+      pl.tab.rates.push_back(m.real(6, "EPS_dot" + std::to_string(k)));
+    }
+    for (std::size_t k = 1; k < pl.tab.rates.size(); ++k)
+      if (!(pl.tab.rates[k] > pl.tab.rates[k - 1])) {
+        ctx.error(m, "strain rates EPS_dot1..N must increase");
+        return false;
+      }
+  } else {
+    ctx.error(m, std::string("material ") + std::string(kw) +
+                     " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36)");
+    return false;
+  }
+  const std::string_view why = out.check();
+  if (!why.empty()) {
+    ctx.error(m, std::string(why));
+    return false;
+  }
+  return true;
+}
+
+bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSection& s) {
+  const hbm::deck::Card* p = part.prop_card;
+  if (!p || p->keyword() != "/PROP/TYPE1") {
+    ctx.error(*part.part_card, "part " + std::to_string(part.id) + " has shell elements: its "
+                               "property must be a /PROP/TYPE1");
+    return false;
+  }
+  s.prop_id = p->id;
+  if (!tria) {
+    const auto ishell = p->integer(0, "Ishell");
+    if (ishell < 0 || ishell > 4) {
+      ctx.error(*p, p->lines.at(0), "Ishell",
+                "Ishell = " + std::to_string(ishell) +
+                    " not supported (0-4: Belytschko-Tsay with hourglass stiffness)");
+      return false;
+    }
+  } else {
+    const auto ish3n = p->integer(0, "Ish3n");
+    if (!(ish3n == 0 || ish3n == 1 || ish3n == 2 || ish3n == 30 || ish3n == 31)) {
+      ctx.error(*p, p->lines.at(0), "Ish3n",
+                "Ish3n = " + std::to_string(ish3n) + " not supported (0, 1, 2, 30, 31: CST + DKT)");
+      return false;
+    }
+  }
+  if (p->integer(0, "Idrill") != 0)
+    ctx.warning(*p, "Idrill != 0: shells carry no drilling stiffness (Idrill = 0 behaviour)");
+  if (p->integer(0, "Ismstr") != 0)
+    ctx.warning(*p, "Ismstr != 0: shells use the large-strain rate formulation");
+  auto nonzero_default = [&](std::size_t line, std::string_view f, double def) {
+    const double v = p->real(line, f);
+    return v > 0 ? v : def;
+  };
+  s.hm = nonzero_default(1, "hm", 0.01);
+  s.hf = nonzero_default(1, "hf", 0.01);
+  s.hr = nonzero_default(1, "hr", 0.01);
+  if (p->real(1, "dm") != 0.0 || p->real(1, "dn") != 0.0) {
+    ctx.error(*p, "membrane / numerical damping Dm, Dn are not supported on shells (give 0)");
+    return false;
+  }
+  auto n = p->integer(2, "N");
+  if (n == 0) n = 5;
+  if (!s.set_points(static_cast<int>(n))) {
+    ctx.error(*p, p->lines.at(2), "N", "N must be 1..10");
+    return false;
+  }
+  s.thickness = p->real(2, "Thick");
+  s.shear_factor = nonzero_default(2, "Ashear", 5.0 / 6.0);
+  s.thickness_change = p->integer(2, "Ithick") == 1;
+  const double pf = p->real(0, "P_thick_fail");
+  s.fail_points = pf > 0 ? static_cast<int>(std::ceil(pf * s.n_points - 1e-9)) : 0;
+  return true;
+}
+
+}  // namespace
+
+void build_shell_groups(BuildContext& ctx) {
+  for (std::string_view kw : {"/SHELL", "/SH3N"}) {
+    ctx.claim(kw);
+    const bool tria = kw == "/SH3N";
+    const int npe = tria ? 3 : 4;
+    std::map<std::int64_t, std::vector<const hbm::deck::Card*>> by_part;
+    std::vector<std::int64_t> order;
+    for (const hbm::deck::Card* c : ctx.starter().cards_of(kw)) {
+      if (!by_part.count(c->id)) order.push_back(c->id);
+      by_part[c->id].push_back(c);
+    }
+    for (std::int64_t part_id : order) {
+      const auto& cards = by_part[part_id];
+      const Index part = ctx.part_index(part_id);
+      if (part == kNoIndex) {
+        ctx.error(*cards.front(), "no part " + std::to_string(part_id));
+        continue;
+      }
+      const Part& p = ctx.part(part);
+      auto g = std::make_unique<ShellElementGroup>();
+      g->keyword = std::string(kw);
+      g->part = part;
+      g->nodes_per_element = static_cast<std::size_t>(npe);
+      if (!p.mat_card) {
+        ctx.error(*cards.front(), "part " + std::to_string(part_id) + " has no material");
+        continue;
+      }
+      if (!read_shell_material(ctx, *p.mat_card, g->data.mat)) continue;
+      if (!read_shell_property(ctx, p, tria, g->data.sec)) continue;
+      const double part_thick = p.part_card ? p.part_card->real(0, "thick") : 0.0;
+      bool ok = true;
+      for (const hbm::deck::Card* c : cards)
+        for (std::size_t r = 0; r < c->n_rows(); ++r) {
+          const auto& row = c->row(r);
+          g->element_id.push_back(c->integer(row, "id"));
+          for (int i = 0; i < npe; ++i) {
+            const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
+            ok = ok && n != kNoIndex;
+            g->connectivity.push_back(n);
+          }
+          const double te = c->real(row, "thick");
+          const double t = te > 0 ? te : (part_thick > 0 ? part_thick : g->data.sec.thickness);
+          if (!(t > 0)) {
+            ctx.error(*c, row, "thick", "shell thickness is 0 (element, part and property)");
+            ok = false;
+          }
+          g->data.thick.push_back(t);
+        }
+      if (!ok) continue;
+      g->n_elements = g->element_id.size();
+      const Index bad = g->initialize(ctx.nodes());
+      if (bad != kNoIndex) {
+        ctx.error(*cards.front(), "shell element " +
+                                      std::to_string(g->element_id[static_cast<std::size_t>(bad)]) +
+                                      " has zero area (coincident nodes?)");
+        continue;
+      }
+      double part_mass = 0.0;
+      for (std::size_t e = 0; e < g->n_elements; ++e) {
+        part_mass += g->slot_mass[e] * npe;
+        for (int i = 0; i < npe; ++i) {
+          const Index n = g->connectivity[e * static_cast<std::size_t>(npe) + static_cast<std::size_t>(i)];
+          ctx.add_nodal_mass(n, g->slot_mass[e]);
+          ctx.add_nodal_inertia(n, g->slot_inertia[e]);
+        }
+      }
+      ctx.add_part_mass(part, part_mass);
+      ctx.add_group(std::move(g));
+    }
+  }
+}
+
+}  // namespace hbm::solver

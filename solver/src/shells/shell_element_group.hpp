@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Engine adaptor of the shell kernels: an ElementGroup (docs/engine-design.md section 3)
+// holding one ShellGroupData (the elements of one part, /SHELL -> Belytschko-Tsay quads,
+// /SH3N -> CST+DKT triangles). compute_forces runs the kernel over fixed chunks of
+// kChunk elements (OpenMP), reduces energies and time steps in chunk order, fills the
+// nodal stiffness slots (k = 2 m_slot / dt_e^2, rotational 2 I_slot / dt_e^2) and
+// reports deleted elements to the core.
+#pragma once
+
+#include "hbm/solver/element_group.hpp"
+#include "shells/shell_group_data.hpp"
+
+#include <vector>
+
+namespace hbm::solver::shells {
+
+class ShellElementGroup final : public ElementGroup {
+ public:
+  ShellGroupData data;
+  std::vector<double> slot_mass;     // lumped mass per node of element e [mass]
+  std::vector<double> slot_inertia;  // rotational inertia per node of element e [mass*length^2]
+
+  // After keyword, part, connectivity, element_id and data (kind, mat, sec, thick) are
+  // set: sizes everything, lumps rho t A / npe and m (t^2 + A) / 12 per node from the
+  // current positions. Returns the first element with zero area, or kNoIndex.
+  Index initialize(const NodalState& nodes);
+
+  std::string_view formulation() const override;
+  void compute_forces(const StepContext& step, const NodalState& nodes,
+                      GroupStepResult& result) override;
+  bool solid_cells() const override { return false; }
+  void cell_field(CellField field, std::span<double> out) const override;
+
+ private:
+  std::vector<ShellKernelTotals> chunk_totals_;
+};
+
+}  // namespace hbm::solver::shells
