@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Builds the 50th percentile male driver model (FeModel) from the geometry sources:
+// torso and neck O-grids (organs, flesh, spine columns, skin), rib cage strips (SH3N),
+// sternum and costal cartilage, pelvis cortex with sacroiliac and pubic joints, rigid
+// acetabula and trochanters, clavicles (deformable shells), rigid scapulae, head and limbs
+// (shell envelopes in rigid bodies carrying the reference mass and inertia), spring joints
+// (/PROP/TYPE8) and neck ligaments (/PROP/TYPE4), contact interfaces.
+#pragma once
+
+#include "hbm/deckgen/fe_model.hpp"
+#include "hbm/deckgen/geometry_sources.hpp"
+
+#include <map>
+#include <string>
+
+namespace hbm::deckgen {
+
+struct MesherOptions {
+  int torso_around = 32;  // nodes around the torso (multiple of 8)
+  int neck_around = 16;   // nodes around the neck (multiple of 8)
+  int limb_around = 12;   // nodes around a limb envelope
+  double limb_ring_spacing = 32;  // mm between limb envelope rings
+  int head_cells = 6;     // cube-sphere cells per cube face edge
+  int clavicle_around = 6, clavicle_along = 8;
+};
+
+// Landmarks of the built model used by the checks (region boundaries for the trunk CoG).
+struct ModelLandmarks {
+  std::map<std::string, Eigen::Vector3d> boundary_centres;  // "T1_upper", "T12_lower", "L5_lower", "seat", "C0"
+  std::map<std::string, std::string> region_of_segment;
+  std::vector<int> skin_outer_faces_first;  // unused placeholder for exports
+};
+
+FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks = nullptr);
+
+// Equivalent shell thickness (mm) of a hollow elliptic section (semi-axes a across the
+// strip thickness direction, b along its height, cortex t) with the same bending
+// stiffness about the height axis as a strip of height h: I = pi/4 (b a^3 - (b-t)(a-t)^3),
+// t_eq = (12 I / h)^(1/3).
+double equivalent_rib_thickness(double height, double width, double cortical, double band_height);
+// Real cross-section area of that hollow section (mm^2).
+double hollow_ellipse_area(double height, double width, double cortical);
+
+}  // namespace hbm::deckgen

@@ -1,0 +1,904 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Body model construction from the geometry sources (see body_mesher.hpp). The torso and
+// the neck are structured O-grids (trunk_grid.hpp); every cell's role (organ, flesh,
+// vertebra, disc, sacrum) comes from its layer and ring; the rib cage, sternum, cartilage
+// and pelvis are shells on the inner-wall ring sharing the hexahedra nodes (as in the
+// seed model); head and limbs are shell envelopes in rigid bodies.
+#include "hbm/deckgen/body_mesher.hpp"
+
+#include "hbm/deckgen/surface_tools.hpp"
+#include "hbm/deckgen/trunk_grid.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace hbm::deckgen {
+
+double hollow_ellipse_area(double height, double width, double t) {
+  double a = width / 2, b = height / 2;
+  return M_PI * (a * b - (a - t) * (b - t));
+}
+
+double equivalent_rib_thickness(double height, double width, double t, double band_height) {
+  double a = width / 2, b = height / 2;
+  double I = M_PI / 4 * (b * a * a * a - (b - t) * std::pow(a - t, 3));
+  return std::cbrt(12 * I / band_height);
+}
+
+namespace {
+
+constexpr double kDensity = 1e-9;  // kg/m^3 -> kg/mm^3
+constexpr double kModulus = 1e-3;  // MPa -> GPa
+constexpr double kRate = 1e-3;     // 1/s -> 1/ms
+
+double sgnpow(double v, double e) { return std::copysign(std::pow(std::abs(v), e), v); }
+
+enum class LayerKind { Flesh, Sacrum, Body, Disc };
+
+struct LayerInfo {
+  LayerKind kind = LayerKind::Flesh;
+  std::string vertebra;  // Body: "T5"; Disc: "T4T5" (upper then lower)
+  std::string region;    // thorax, abdomen, pelvis, neck
+};
+
+FeMaterial convert(const MaterialSpec& s, const std::string& name) {
+  FeMaterial m;
+  m.name = name;
+  m.law = s.law;
+  m.rho = s.density * kDensity;
+  m.source = s.source;
+  if (s.law == "LAW1") {
+    m.E = s.e_or_k * kModulus;
+    m.nu = s.nu;
+  } else {
+    m.K = s.e_or_k * kModulus;
+    m.G0 = s.g0 * kModulus;
+    m.Ginf = s.ginf * kModulus;
+    m.beta = s.beta * kRate;
+  }
+  return m;
+}
+
+class Builder {
+ public:
+  Builder(const GeometrySources& g, const MesherOptions& o) : g_(g), o_(o) {}
+
+  FeModel run(ModelLandmarks* lm);
+
+ private:
+  int material(const std::string& name) {
+    int i = m_.find_material(name);
+    if (i >= 0) return i;
+    return m_.add_material(convert(g_.material(name), name));
+  }
+  int part(const std::string& name, ElementKind kind, int mat, const std::string& segment, const std::string& region,
+           double thickness = 0) {
+    int i = m_.find_part(name);
+    if (i >= 0) return i;
+    FePart p;
+    p.name = name;
+    p.kind = kind;
+    p.material = mat;
+    p.segment = segment;
+    p.region = region;
+    p.thickness = thickness;
+    return m_.add_part(p);
+  }
+  void brick(int part_index, const std::array<int, 8>& h) {
+    m_.bricks.push_back(h);
+    m_.brick_part.push_back(part_index);
+  }
+  void shell(int part_index, const std::array<int, 4>& q, double t = 0) {
+    m_.shells.push_back(q);
+    m_.shell_part.push_back(part_index);
+    m_.shell_thick.push_back(t);
+  }
+  void tria(int part_index, const std::array<int, 3>& t, double th) {
+    m_.trias.push_back(t);
+    m_.tria_part.push_back(part_index);
+    m_.tria_thick.push_back(th);
+  }
+  int spring(int part_index, int a, int b) {
+    m_.springs.push_back({a, b});
+    m_.spring_part.push_back(part_index);
+    return static_cast<int>(m_.springs.size()) - 1;
+  }
+  int rigid(const std::string& name, const std::string& segment, int main, std::vector<int> nodes) {
+    FeRigidBody r;
+    r.id = static_cast<int>(m_.rigid_bodies.size()) + 1;
+    r.name = name;
+    r.segment = segment;
+    r.main_node = main;
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    for (int n : nodes)
+      if (rigid_of_.count(n))
+        throw std::logic_error("node " + std::to_string(n + 1) + " in rigid bodies " + rigid_of_[n] + " and " + name);
+    for (int n : nodes) rigid_of_[n] = name;
+    r.nodes = std::move(nodes);
+    m_.rigid_bodies.push_back(r);
+    return static_cast<int>(m_.rigid_bodies.size()) - 1;
+  }
+  int spring_part(const std::string& joint_name) {
+    std::string pname = "joint_" + joint_name;
+    int i = m_.find_part(pname);
+    if (i >= 0) return i;
+    const JointSpec& j = g_.joint(joint_name);
+    FeSpringProp sp;
+    sp.id = static_cast<int>(m_.spring_props.size()) + 1;
+    sp.name = joint_name;
+    if (j.kind == "TYPE8") {
+      sp.type = 8;
+      for (int k = 0; k < 3; ++k) {
+        sp.k[static_cast<std::size_t>(k)] = j.k[k] * 1e-3;        // N/mm -> kN/mm
+        sp.k[static_cast<std::size_t>(k + 3)] = j.kr[k];          // N*m/rad = kN*mm/rad
+        sp.c[static_cast<std::size_t>(k)] = j.c_trans;            // N*s/mm = kN*ms/mm
+        sp.c[static_cast<std::size_t>(k + 3)] = j.c_rot * 1e3;    // N*m*s/rad -> kN*mm*ms/rad
+      }
+    } else {
+      sp.type = 4;
+      sp.k[0] = j.k[0] * 1e-3;
+      sp.c[0] = j.c_trans;
+    }
+    m_.spring_props.push_back(sp);
+    FePart p;
+    p.name = pname;
+    p.kind = ElementKind::Spring;
+    p.material = -1;
+    p.spring_prop = static_cast<int>(m_.spring_props.size()) - 1;
+    p.segment = "joints";
+    p.region = "joints";
+    return m_.add_part(p);
+  }
+  Eigen::Vector3d moved(const std::string& link, const Eigen::Vector3d& p) const { return g_.skeleton.motion(link) * p; }
+
+  void build_torso();
+  void build_neck();
+  void build_ribcage();
+  void build_pelvis();
+  void build_shoulders();
+  void build_head();
+  void build_limbs();
+  std::vector<int> limb_envelope(const std::string& link, const std::string& table, const Eigen::Vector3d& p0,
+                                 const Eigen::Vector3d& p1, int part_index);
+  void build_contacts();
+  void finalize_rigid_bodies();
+
+  const GeometrySources& g_;
+  const MesherOptions& o_;
+  FeModel m_;
+  std::map<int, std::string> rigid_of_;
+  std::unique_ptr<TrunkGrid> torso_, neck_;
+  std::vector<LayerInfo> torso_layers_, neck_layers_;
+  int neck_top_level_ = 0;
+  std::vector<std::array<int, 4>> torso_skin_, neck_skin_;
+  std::vector<std::array<int, 8>> torso_hexes_;
+  std::vector<std::array<int, 4>> cage_segments_;  // triangles as quads with n4 = n3
+  std::set<int> pelvis_shell_nodes_, sternum_nodes_;
+  int cart_part = -1, cart_mat = -1;
+  double cart_ratio = 0;
+  std::vector<int> head_env_nodes_, arm_env_nodes_[2], clavicle_nodes_[2];
+  std::map<std::string, int> joint_node_;      // named joint nodes
+  std::map<std::string, std::vector<int>> rb_nodes_;  // rigid-body secondary nodes by name
+  std::map<std::string, Eigen::Vector3d> rb_main_at_;
+  ModelLandmarks lm_;
+};
+
+// --- torso --------------------------------------------------------------------------------
+
+void Builder::build_torso() {
+  const auto& S1 = g_.vertebra("S1");
+  const double incl12 = g_.ribs[11].inclination_deg * M_PI / 180;
+  const double z_t12 = g_.vertebra("T12").lower.y(), z_l3 = g_.vertebra("L3").upper.y();
+  auto tilt_at = [&](const std::string& vert, double z) {
+    if (vert.size() > 1 && vert[0] == 'T') return g_.ribs[static_cast<std::size_t>(std::stoi(vert.substr(1)) - 1)].inclination_deg * M_PI / 180;
+    // Lumbar and pelvis: the tilt fades from the rib-12 value at the T12 lower plate to 0 at
+    // the L3 upper plate.
+    return incl12 * std::clamp((z - z_l3) / (z_t12 - z_l3), 0.0, 1.0);
+  };
+  std::vector<GridLevel> lv;
+  auto add = [&](const std::string& name, double x, double z, const std::string& vert, double r) {
+    GridLevel l;
+    l.name = name;
+    l.x_spine = x;
+    l.z_spine = z;
+    l.tilt = tilt_at(vert, z);
+    l.body_radius = r;
+    lv.push_back(l);
+  };
+  const double z_seat = g_.torso.rows.front().z;
+  const Eigen::Vector2d apex = S1.lower, plate = S1.upper;
+  add("seat", apex.x(), z_seat, "", 20);
+  add("buttock", apex.x(), 0.5 * (z_seat + apex.y()), "", 20);
+  for (int k = 0; k <= 3; ++k) {
+    Eigen::Vector2d p = apex + (plate - apex) * (k / 3.0);
+    add(k == 0 ? "sacral_apex" : k == 3 ? "S1_upper" : "sacrum_" + std::to_string(k), p.x(), p.y(), "", 20);
+  }
+  std::vector<LayerInfo> layers{{LayerKind::Flesh, "", "pelvis"}, {LayerKind::Flesh, "", "pelvis"},
+                                {LayerKind::Sacrum, "S1", "pelvis"}, {LayerKind::Sacrum, "S1", "pelvis"},
+                                {LayerKind::Sacrum, "S1", "pelvis"}};
+  std::string below = "S1";
+  for (int i = static_cast<int>(g_.spine.size()) - 2; i >= 0; --i) {
+    const auto& v = g_.spine[static_cast<std::size_t>(i)];
+    if (v.name[0] == 'C') break;
+    bool lumbar = v.name[0] == 'L';
+    std::string region = lumbar ? "abdomen" : "thorax";
+    std::string disc_region = v.name == "L5" ? "pelvis" : v.name == "T12" ? "abdomen" : region;
+    double r = lumbar ? 20 : 15;
+    add(v.name + "_lower", v.lower.x(), v.lower.y(), v.name, r);
+    layers.push_back({LayerKind::Disc, v.name + below, disc_region});
+    add(v.name + "_upper", v.upper.x(), v.upper.y(), v.name, r);
+    layers.push_back({LayerKind::Body, v.name, region});
+    below = v.name;
+  }
+  GridParams gp;
+  gp.n = o_.torso_around;
+  torso_ = std::make_unique<TrunkGrid>(m_, g_.torso, lv, gp);
+  torso_layers_ = layers;
+
+  const int N = torso_->n(), m = torso_->m();
+  const int vert_mat = material("vertebra");
+  std::map<std::string, int> organ, flesh, skin;
+  const auto& skin_sec = g_.shell_sections.at("skin");
+  for (const char* region : {"thorax", "abdomen", "pelvis"}) {
+    std::string r = region;
+    int om = material(r == "thorax" ? "thoracic_organs" : "abdominal_organs");
+    organ[r] = part(r == "thorax" ? "thoracic_organs" : r == "abdomen" ? "abdominal_organs" : "pelvic_organs", ElementKind::Brick, om, r, "organs");
+    flesh[r] = part("flesh_" + r, ElementKind::Brick, material("flesh"), r, "flesh");
+    skin[r] = part("skin_" + r, ElementKind::Shell, material("skin"), r, "skin", skin_sec.total_thickness);
+  }
+  for (int l = 0; l + 1 < torso_->levels(); ++l) {
+    const LayerInfo& L = layers[static_cast<std::size_t>(l)];
+    int column = -1;
+    if (L.kind == LayerKind::Body)
+      column = part(L.vertebra[0] == 'T' ? "thoracic_vertebrae" : "lumbar_vertebrae", ElementKind::Brick, vert_mat, L.region, "spine");
+    else if (L.kind == LayerKind::Sacrum)
+      column = part("sacrum", ElementKind::Brick, vert_mat, "pelvis", "pelvis");
+    else if (L.kind == LayerKind::Disc) {
+      // One material per disc: its modulus is calibrated below from the cell geometry.
+      FeMaterial dm = convert(g_.material("disc_thoracolumbar"), "disc_" + L.vertebra);
+      int mi = m_.add_material(dm);
+      column = part("disc_" + L.vertebra, ElementKind::Brick, mi, L.region, "spine");
+    } else
+      column = flesh.at(L.region);
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) {
+        auto h = torso_->block_cell(l, a, b);
+        brick(organ.at(L.region), h);
+        torso_hexes_.push_back(h);
+      }
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < N; ++j) {
+        auto h = torso_->ring_cell(l, r, j);
+        int p = torso_->is_column_cell(r, j) ? column : r == 0 ? organ.at(L.region) : flesh.at(L.region);
+        brick(p, h);
+        torso_hexes_.push_back(h);
+      }
+    for (int j = 0; j < N; ++j) {
+      auto q = torso_->ring_face(l, 3, j);
+      shell(skin.at(L.region), q);
+      torso_skin_.push_back(q);
+    }
+  }
+  // Landmarks for the trunk CoG reference: centres of the skin curve at region boundaries.
+  auto centre = [&](const std::string& level_name) {
+    for (int l = 0; l < torso_->levels(); ++l)
+      if (torso_->level(l).name == level_name) {
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int j = 0; j < N; ++j) c += m_.nodes[static_cast<std::size_t>(torso_->ring_node(l, 3, j))];
+        return Eigen::Vector3d(c / N);
+      }
+    throw std::logic_error("no torso level " + level_name);
+  };
+  lm_.boundary_centres["T1_upper"] = centre("T1_upper");
+  lm_.boundary_centres["T12_lower"] = centre("T12_lower");
+  lm_.boundary_centres["L5_lower"] = centre("L5_lower");
+  lm_.boundary_centres["seat"] = centre("seat");
+}
+
+// --- rib cage -----------------------------------------------------------------------------
+
+void Builder::build_ribcage() {
+  const int N = torso_->n(), half = N / 2;
+  auto layer_of_body = [&](const std::string& vert) {
+    for (std::size_t l = 0; l < torso_layers_.size(); ++l)
+      if (torso_layers_[l].kind == LayerKind::Body && torso_layers_[l].vertebra == vert) return static_cast<int>(l);
+    throw std::logic_error("no body layer " + vert);
+  };
+  auto P = [&](int n) { return m_.nodes[static_cast<std::size_t>(n)]; };
+  // Split a wall quad (left/right mirrored diagonals) into two triangles.
+  auto split = [&](int l, int j, bool left) {
+    int a = torso_->ring_node(l, 1, j), b = torso_->ring_node(l, 1, j + 1);
+    int c = torso_->ring_node(l + 1, 1, j + 1), d = torso_->ring_node(l + 1, 1, j);
+    std::array<std::array<int, 3>, 2> t;
+    if (left) t = {{{a, b, c}, {a, c, d}}};
+    else t = {{{a, b, d}, {b, c, d}}};
+    return t;
+  };
+  auto band = [&](int l, int j) {
+    int a = torso_->ring_node(l, 1, j), b = torso_->ring_node(l, 1, j + 1);
+    int c = torso_->ring_node(l + 1, 1, j + 1), d = torso_->ring_node(l + 1, 1, j);
+    double h = 0.5 * ((P(d) - P(a)).norm() + (P(c) - P(b)).norm());
+    double len = 0.5 * ((P(b) - P(a)).norm() + (P(c) - P(d)).norm());
+    return std::pair<double, double>(h, len);
+  };
+  const MaterialSpec& rib_spec = g_.material("rib_cortical");
+  for (const RibSpec& rib : g_.ribs) {
+    int l = layer_of_body(rib.vertebra);
+    int j0 = static_cast<int>(std::lround(half * (1 - rib.end_fraction)));
+    j0 = std::max(j0, 2);
+    const int jh = half - 2;  // cell next to the vertebral column
+    struct Elem { std::array<int, 3> t; double th; };
+    std::vector<Elem> elems;
+    double real_mass_area = 0, model_volume = 0;
+    for (int j = j0; j <= jh; ++j) {
+      double s = (jh - j + 0.5) / (jh - j0 + 1);  // abscissa 0 at the head, 1 at the end
+      auto interp = [&](const double v[3]) { return s < 0.5 ? v[0] + (v[1] - v[0]) * s / 0.5 : v[1] + (v[2] - v[1]) * (s - 0.5) / 0.5; };
+      double h = interp(rib.height), w = interp(rib.width), t = interp(rib.cortical);
+      for (int side = 0; side < 2; ++side) {
+        bool left = side == 0;
+        int jj = left ? j : N - 1 - j;
+        auto [bh, len] = band(l, jj);
+        double teq = equivalent_rib_thickness(h, w, t, bh);
+        real_mass_area += hollow_ellipse_area(h, w, t) * len;
+        model_volume += bh * len * teq;
+        for (const auto& tri : split(l, jj, left)) elems.push_back({tri, teq});
+      }
+    }
+    // Density that keeps the real rib mass (cortex only; the trabecular core is light).
+    FeMaterial rm = convert(rib_spec, "rib_" + std::string(rib.index < 10 ? "0" : "") + std::to_string(rib.index));
+    rm.rho *= real_mass_area / model_volume;
+    rm.source += "; density scaled by real/equivalent section area (calibration.md)";
+    int mi = m_.add_material(rm);
+    int p = part(rm.name, ElementKind::Tria, mi, "thorax", "ribs");
+    for (const auto& e : elems) {
+      tria(p, e.t, e.th);
+      cage_segments_.push_back({e.t[0], e.t[1], e.t[2], e.t[2]});
+    }
+    // Costal cartilage: cells between the sternum (cells 0 and N-1) and the rib end.
+    if (rib.cartilage != CartilageKind::None) {
+      const auto& cs = g_.shell_sections.at("costal_cartilage");
+      double a = cs.width / 2, b = cs.height / 2, I = M_PI / 4 * b * a * a * a, A = M_PI * a * b;
+      std::vector<Elem> ce;
+      double ra = 0, mv = 0;
+      for (int j = 1; j < j0; ++j)
+        for (int side = 0; side < 2; ++side) {
+          bool left = side == 0;
+          int jj = left ? j : N - 1 - j;
+          auto [bh, len] = band(l, jj);
+          double teq = std::cbrt(12 * I / bh);
+          ra += A * len;
+          mv += bh * len * teq;
+          for (const auto& tri : split(l, jj, left)) ce.push_back({tri, teq});
+        }
+      if (cart_part < 0) {
+        FeMaterial cm = convert(g_.material("costal_cartilage"), "costal_cartilage");
+        cart_mat = m_.add_material(cm);
+        cart_part = part("costal_cartilage", ElementKind::Tria, cart_mat, "thorax", "cartilage");
+        cart_ratio = mv > 0 ? ra / mv : 1;
+        m_.materials[static_cast<std::size_t>(cart_mat)].rho *= cart_ratio;
+        m_.materials[static_cast<std::size_t>(cart_mat)].source += "; density scaled by real/equivalent section area";
+      }
+      for (const auto& e : ce) {
+        tria(cart_part, e.t, e.th);
+        cage_segments_.push_back({e.t[0], e.t[1], e.t[2], e.t[2]});
+      }
+    }
+  }
+  // Sternum: front cells from the rib-1 band to the rib-7 band.
+  const auto& ss = g_.shell_sections.at("sternum");
+  double T = ss.total_thickness, tc = ss.cortical;
+  double teq = std::cbrt(T * T * T - std::pow(T - 2 * tc, 3));
+  FeMaterial sm = convert(g_.material("sternum_cortical"), "sternum");
+  double rho_c = sm.rho, rho_core = ss.core_density * kDensity;
+  sm.rho = (2 * tc * rho_c + (T - 2 * tc) * rho_core) / teq;
+  sm.source += "; sandwich-equivalent thickness and density (shell_sections.csv)";
+  int smi = m_.add_material(sm);
+  int sp = part("sternum", ElementKind::Tria, smi, "thorax", "sternum", teq);
+  int l1 = layer_of_body("T1"), l7 = layer_of_body("T7");
+  for (int l = l7; l <= l1; ++l)
+    for (int side = 0; side < 2; ++side) {
+      bool left = side == 0;
+      int jj = left ? 0 : N - 1;
+      for (const auto& tri : split(l, jj, left)) {
+        tria(sp, tri, teq);
+        cage_segments_.push_back({tri[0], tri[1], tri[2], tri[2]});
+        for (int n : tri) sternum_nodes_.insert(n);
+      }
+    }
+}
+
+// --- pelvis --------------------------------------------------------------------------------
+
+void Builder::build_pelvis() {
+  const int N = torso_->n(), half = N / 2;
+  const auto& pc = g_.shell_sections.at("pelvis_cortex");
+  int cortex = part("pelvis_cortex", ElementKind::Shell, material("pelvis_cortical"), "pelvis", "pelvis", pc.total_thickness);
+  int joint = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", pc.total_thickness);
+  const double z_pubis = g_.pelvis.at("pubic_symphysis").z(), z_isch = g_.pelvis.at("ischial_tuberosity_r").z();
+  const double z_crest = std::max(g_.pelvis.at("asis_r").z(), g_.pelvis.at("iliac_tubercle_r").z());
+  for (int l = 0; l + 1 < torso_->levels(); ++l) {
+    const LayerInfo& L = torso_layers_[static_cast<std::size_t>(l)];
+    double zb = torso_->level(l).z_spine, zt = torso_->level(l + 1).z_spine, zm = 0.5 * (zb + zt);
+    if (zt <= z_isch - 10 || zb >= z_crest) continue;
+    // Angular extent: iliac wings above the pubis end at the ASIS (62 % of the half wall from
+    // the back); the pubic level closes the ring to the symphysis; the ischium below ends at
+    // 75 %. Estimates of the pelvic ring shape (pelvis_landmarks.csv gives the heights).
+    int jf = 0;
+    bool pubic = std::abs(zm - z_pubis) <= 25;
+    if (pubic) jf = 1;
+    else if (zm > z_pubis) jf = static_cast<int>(std::lround(half * (1 - 0.62)));
+    else jf = static_cast<int>(std::lround(half * (1 - 0.75)));
+    bool sacral = L.kind == LayerKind::Sacrum;
+    int jb = half - 2;  // next to the column
+    for (int j = jf; j <= jb; ++j)
+      for (int side = 0; side < 2; ++side) {
+        int jj = side == 0 ? j : N - 1 - j;
+        bool si = j == jb;
+        if (si && !sacral) continue;  // the posterior iliac edge is free above/below the sacrum
+        auto q = torso_->ring_face(l, 1, jj);
+        shell(si ? joint : cortex, q);
+        for (int n : q) pelvis_shell_nodes_.insert(n);
+      }
+    if (pubic)
+      for (int jj : {0, N - 1}) {
+        auto q = torso_->ring_face(l, 1, jj);
+        shell(joint, q);
+        for (int n : q) pelvis_shell_nodes_.insert(n);
+      }
+  }
+  // Rigid acetabula (pelvis shell nodes within 40 mm of the acetabular centre) with the hip
+  // joint centre as main node; rigid greater trochanter nodes join the femur rigid body.
+  for (const char* s : {"r", "l"}) {
+    std::string side = s;
+    Eigen::Vector3d ac = g_.pelvis.at("acetabulum_" + side);
+    std::vector<int> nodes;
+    for (int n : pelvis_shell_nodes_)
+      if ((m_.nodes[static_cast<std::size_t>(n)] - ac).norm() <= 40) nodes.push_back(n);
+    if (nodes.size() < 3) throw std::runtime_error("pelvis: fewer than 3 cortex nodes within 40 mm of acetabulum_" + side +
+                                                   " (check pelvis_landmarks.csv and torso_sections.csv wall)");
+    Eigen::Vector3d hip = g_.skeleton.link("femur_" + side).joint_origin;
+    int main = m_.add_node(hip);
+    rigid("acetabulum_" + side, "pelvis", main, nodes);
+    joint_node_["hip_pelvis_" + side] = main;
+    std::vector<int> troch;
+    Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
+    for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n)
+      if ((m_.nodes[static_cast<std::size_t>(n)] - gt).norm() <= 30 && !rigid_of_.count(n)) troch.push_back(n);
+    if (troch.empty()) throw std::runtime_error("pelvis: no flesh node within 30 mm of greater_trochanter_" + side);
+    rb_nodes_["femur_" + side] = troch;
+  }
+}
+
+// --- neck ----------------------------------------------------------------------------------
+
+void Builder::build_neck() {
+  const GridLevel base = torso_->level(torso_->levels() - 1);
+  std::vector<GridLevel> lv;
+  std::vector<LayerInfo> layers;
+  GridLevel b0 = base;
+  b0.name = "neck_base";
+  b0.body_radius = 8;
+  lv.push_back(b0);
+  std::string below = "T1";
+  for (int i = 6; i >= 0; --i) {
+    const auto& v = g_.spine[static_cast<std::size_t>(i)];
+    GridLevel lo{v.name + "_lower", v.lower.x(), v.lower.y(), 0, 8}, up{v.name + "_upper", v.upper.x(), v.upper.y(), 0, 8};
+    lv.push_back(lo);
+    layers.push_back({LayerKind::Disc, v.name + below, "neck"});
+    lv.push_back(up);
+    layers.push_back({LayerKind::Body, v.name, "neck"});
+    below = v.name;
+  }
+  // Atlanto-occipital layer: 6 mm capsule between the C1 upper facet and the skull base.
+  const auto& c1 = g_.vertebra("C1");
+  lv.push_back({"C0", c1.upper.x(), c1.upper.y() + 6.0, 0, 8});
+  layers.push_back({LayerKind::Disc, "C0C1", "neck"});
+  // Tilt: from the torso top value at the base to 0 at the skull base, linear in level index.
+  const int L = static_cast<int>(lv.size());
+  for (int l = 0; l < L; ++l) lv[static_cast<std::size_t>(l)].tilt = base.tilt * (1.0 - static_cast<double>(l) / (L - 1));
+  GridParams gp;
+  gp.n = o_.neck_around;
+  gp.relax_length = 12;
+  neck_ = std::make_unique<TrunkGrid>(m_, g_.neck, lv, gp);
+  neck_layers_ = layers;
+  neck_top_level_ = L - 1;
+  lm_.boundary_centres["C0"] = Eigen::Vector3d(c1.upper.x(), 0, c1.upper.y() + 6.0);
+
+  const int N = neck_->n(), m = neck_->m();
+  int visceral = part("neck_visceral", ElementKind::Brick, material("flesh"), "neck", "neck");
+  int muscles = part("neck_muscles", ElementKind::Brick, material("muscle"), "neck", "neck");
+  int skin = part("skin_neck", ElementKind::Shell, material("skin"), "neck", "skin", g_.shell_sections.at("skin").total_thickness);
+  int vmat = material("vertebra"), dmat = material("disc_cervical");
+  for (int l = 0; l + 1 < L; ++l) {
+    const LayerInfo& Ly = layers[static_cast<std::size_t>(l)];
+    int column = Ly.kind == LayerKind::Body
+                     ? part("vertebra_" + Ly.vertebra, ElementKind::Brick, vmat, "neck", "neck")
+                     : part((Ly.vertebra == "C0C1" || Ly.vertebra == "C1C2" ? "joint_capsule_" : "disc_") + Ly.vertebra,
+                            ElementKind::Brick, dmat, "neck", "neck");
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) brick(visceral, neck_->block_cell(l, a, b));
+    std::vector<int> col_nodes;
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < N; ++j) {
+        auto h = neck_->ring_cell(l, r, j);
+        bool col = neck_->is_column_cell(r, j);
+        brick(col ? column : r == 0 ? visceral : muscles, h);
+        if (col) col_nodes.insert(col_nodes.end(), h.begin(), h.end());
+      }
+    for (int j = 0; j < N; ++j) {
+      auto q = neck_->ring_face(l, 3, j);
+      shell(skin, q);
+      neck_skin_.push_back(q);
+    }
+    if (Ly.kind == LayerKind::Body) rb_nodes_["vertebra_" + Ly.vertebra] = col_nodes;
+  }
+  // Rigid cervical vertebrae C1..C7: main node at the centroid of the column nodes.
+  for (int i = 0; i < 7; ++i) {
+    std::string name = "vertebra_C" + std::to_string(i + 1);
+    auto& nodes = rb_nodes_[name];
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : nodes) c += m_.nodes[static_cast<std::size_t>(n)];
+    c /= static_cast<double>(nodes.size());
+    rb_main_at_[name] = c;
+  }
+  // Ligament springs across each disc C2-C3 ... C7-T1: anterior longitudinal (ring 0 midline),
+  // posterior longitudinal (ring 1 midline), ligamentum flavum / interspinous (ring 2 midline),
+  // capsular (ring 2 either side).
+  int lig = spring_part("cervical_ligament");
+  for (int l = 0; l + 1 < L; ++l) {
+    const LayerInfo& Ly = layers[static_cast<std::size_t>(l)];
+    if (Ly.kind != LayerKind::Disc || Ly.vertebra == "C0C1" || Ly.vertebra == "C1C2") continue;
+    const int bk = neck_->back();
+    for (auto [r, j] : std::vector<std::pair<int, int>>{{0, bk}, {1, bk}, {2, bk}, {2, bk - 1}, {2, bk + 1}})
+      spring(lig, neck_->ring_node(l, r, j), neck_->ring_node(l + 1, r, j));
+  }
+  // Occiput-C1 and C1-odontoid generalized springs (nodes at the joint centres, one on each
+  // rigid body).
+  Eigen::Vector3d oc(c1.upper.x(), 0, c1.upper.y());
+  Eigen::Vector3d c12(0.5 * (c1.lower.x() + g_.vertebra("C2").upper.x()), 0, 0.5 * (c1.lower.y() + g_.vertebra("C2").upper.y()));
+  int oc_head = m_.add_node(oc), oc_c1 = m_.add_node(oc), c12_c1 = m_.add_node(c12), c12_c2 = m_.add_node(c12);
+  spring(spring_part("occiput_c1"), oc_c1, oc_head);
+  spring(spring_part("odontoid_c1"), c12_c2, c12_c1);
+  rb_nodes_["vertebra_C1"].push_back(oc_c1);
+  rb_nodes_["vertebra_C1"].push_back(c12_c1);
+  rb_nodes_["vertebra_C2"].push_back(c12_c2);
+  rb_nodes_["head"].push_back(oc_head);
+  for (int n : neck_->level_nodes(neck_top_level_)) rb_nodes_["head"].push_back(n);
+}
+
+// --- head ----------------------------------------------------------------------------------
+
+void Builder::build_head() {
+  const SkeletonLink& hl = g_.skeleton.link("head");
+  const HeadEnvelope& he = g_.head;
+  Eigen::Vector3d c = hl.cog + Eigen::Vector3d(0, 0, he.centre_above_cog);
+  int env = part("head_envelope", ElementKind::Shell, material("envelope"), "head", "head", g_.shell_sections.at("envelope").total_thickness);
+  // Cube-sphere: each cube face gridded k x k, projected to the unit sphere, scaled to the
+  // ellipsoid semi-axes.
+  const int k = o_.head_cells;
+  std::map<std::array<long, 3>, int> ids;
+  auto node_at = [&](const Eigen::Vector3d& cube) {
+    std::array<long, 3> key{std::lround(cube.x() * 1000), std::lround(cube.y() * 1000), std::lround(cube.z() * 1000)};
+    auto it = ids.find(key);
+    if (it != ids.end()) return it->second;
+    Eigen::Vector3d u = cube.normalized();
+    Eigen::Vector3d p = c + Eigen::Vector3d(u.x() * he.ax, u.y() * he.ay, u.z() * he.az);
+    int n = m_.add_node(moved("head", p));
+    ids[key] = n;
+    head_env_nodes_.push_back(n);
+    return n;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sgn : {1, -1}) {
+      for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+          auto corner = [&](int a, int b) {
+            Eigen::Vector3d q;
+            double u = -1 + 2.0 * a / k, v = -1 + 2.0 * b / k;
+            q[axis] = sgn;
+            q[(axis + 1) % 3] = u;
+            q[(axis + 2) % 3] = v;
+            return q;
+          };
+          std::array<int, 4> quad{node_at(corner(i, j)), node_at(corner(i + 1, j)), node_at(corner(i + 1, j + 1)), node_at(corner(i, j + 1))};
+          if (sgn < 0) std::swap(quad[1], quad[3]);
+          shell(env, quad);
+        }
+    }
+  for (int n : head_env_nodes_) rb_nodes_["head"].push_back(n);
+  rb_main_at_["head"] = moved("head", hl.cog);
+}
+
+// --- limbs ---------------------------------------------------------------------------------
+
+std::vector<int> Builder::limb_envelope(const std::string& link, const std::string& table, const Eigen::Vector3d& p0,
+                                        const Eigen::Vector3d& p1, int part_index) {
+  const auto& secs = g_.limbs.at(table);
+  const double Lseg = (p1 - p0).norm();
+  Eigen::Vector3d a = (p1 - p0) / Lseg;
+  Eigen::Vector3d ew = Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitY().dot(a) * a;
+  if (ew.norm() < 0.2) ew = Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ().dot(a) * a;
+  ew.normalize();
+  Eigen::Vector3d ed = a.cross(ew);
+  double f0 = secs.front().fraction, f1 = secs.back().fraction;
+  int rings = std::max(2, static_cast<int>(std::ceil((f1 - f0) * Lseg / o_.limb_ring_spacing)) + 1);
+  const int na = o_.limb_around;
+  std::vector<int> nodes;
+  std::vector<std::vector<int>> ring_ids;
+  for (int r = 0; r < rings; ++r) {
+    double f = f0 + (f1 - f0) * r / (rings - 1);
+    std::size_t i = 1;
+    while (i + 1 < secs.size() && secs[i].fraction < f) ++i;
+    const LimbSection &s0 = secs[i - 1], &s1 = secs[i];
+    double t = std::clamp((f - s0.fraction) / (s1.fraction - s0.fraction), 0.0, 1.0);
+    double hw = s0.half_width + t * (s1.half_width - s0.half_width);
+    double hd = s0.half_depth + t * (s1.half_depth - s0.half_depth);
+    double ex = s0.exponent + t * (s1.exponent - s0.exponent);
+    Eigen::Vector3d c = p0 + f * Lseg * a;
+    std::vector<int> ids;
+    for (int k = 0; k < na; ++k) {
+      double th = 2 * M_PI * k / na;
+      Eigen::Vector3d p = c + ed * hd * sgnpow(std::cos(th), 2.0 / ex) + ew * hw * sgnpow(std::sin(th), 2.0 / ex);
+      int n = m_.add_node(moved(link, p));
+      ids.push_back(n);
+      nodes.push_back(n);
+    }
+    ring_ids.push_back(ids);
+  }
+  for (int r = 0; r + 1 < rings; ++r)
+    for (int k = 0; k < na; ++k) {
+      auto ru = static_cast<std::size_t>(r), kk = static_cast<std::size_t>(k), k1 = static_cast<std::size_t>((k + 1) % na);
+      // Outward normal: ring direction ed -> ew is counter-clockwise about a.
+      shell(part_index, {ring_ids[ru][kk], ring_ids[ru][k1], ring_ids[ru + 1][k1], ring_ids[ru + 1][kk]});
+    }
+  return nodes;
+}
+
+void Builder::build_limbs() {
+  const double env_t = g_.shell_sections.at("envelope").total_thickness;
+  int env_mat = material("envelope");
+  for (const char* s : {"r", "l"}) {
+    std::string side = s;
+    int si = side == "r" ? 0 : 1;
+    const SkeletonLink& hum = g_.skeleton.link("humerus_" + side);
+    const SkeletonLink& fa = g_.skeleton.link("forearm_" + side);
+    const SkeletonLink& fem = g_.skeleton.link("femur_" + side);
+    const SkeletonLink& tib = g_.skeleton.link("tibia_" + side);
+    Eigen::Vector3d elbow = fa.joint_origin, shoulder = hum.joint_origin;
+    Eigen::Vector3d wrist = g_.limb_points.at("wrist_" + side);
+    int hp = part("upper_arm_" + side, ElementKind::Shell, env_mat, "humerus_" + side, "limbs", env_t);
+    int fp = part("forearm_hand_" + side, ElementKind::Shell, env_mat, "forearm_" + side, "limbs", env_t);
+    int tp = part("thigh_" + side, ElementKind::Shell, env_mat, "femur_" + side, "limbs", env_t);
+    int lp = part("leg_foot_" + side, ElementKind::Shell, env_mat, "tibia_" + side, "limbs", env_t);
+    auto hn = limb_envelope("humerus_" + side, "humerus", shoulder, elbow, hp);
+    auto fn = limb_envelope("forearm_" + side, "forearm", elbow, wrist, fp);
+    Eigen::Vector3d hip = fem.joint_origin, knee = tib.joint_origin;
+    auto tn = limb_envelope("femur_" + side, "femur", hip, knee, tp);
+    Eigen::Vector3d ankle = g_.limb_points.at("ankle_" + side);
+    auto ln = limb_envelope("tibia_" + side, "tibia", knee, ankle, lp);
+    Eigen::Vector3d heel = g_.limb_points.at("heel_" + side), toe = g_.limb_points.at("toe_" + side);
+    auto ft = limb_envelope("tibia_" + side, "foot", heel, toe, lp);
+    ln.insert(ln.end(), ft.begin(), ft.end());
+    arm_env_nodes_[si] = hn;
+    arm_env_nodes_[si].insert(arm_env_nodes_[si].end(), fn.begin(), fn.end());
+    // Joint nodes (one per rigid body at each joint centre) and the spring joints.
+    int gh_h = m_.add_node(moved("humerus_" + side, shoulder));
+    int el_h = m_.add_node(moved("humerus_" + side, elbow)), el_f = m_.add_node(moved("forearm_" + side, elbow));
+    int hip_f = m_.add_node(moved("femur_" + side, hip));
+    int kn_f = m_.add_node(moved("femur_" + side, knee)), kn_t = m_.add_node(moved("tibia_" + side, knee));
+    spring(spring_part("shoulder"), joint_node_.at("gh_scapula_" + side), gh_h);
+    spring(spring_part("elbow"), el_h, el_f);
+    spring(spring_part("hip"), joint_node_.at("hip_pelvis_" + side), hip_f);
+    spring(spring_part("knee"), kn_f, kn_t);
+    auto push = [&](const std::string& rb, const std::vector<int>& v) {
+      auto& d = rb_nodes_[rb];
+      d.insert(d.end(), v.begin(), v.end());
+    };
+    push("humerus_" + side, hn);
+    push("humerus_" + side, {gh_h, el_h});
+    push("forearm_" + side, fn);
+    push("forearm_" + side, {el_f});
+    push("femur_" + side, tn);
+    push("femur_" + side, {hip_f, kn_f});
+    push("tibia_" + side, ln);
+    push("tibia_" + side, {kn_t});
+    for (const char* l : {"humerus_", "forearm_", "femur_", "tibia_"}) {
+      std::string ln2 = l + side;
+      rb_main_at_[ln2] = moved(ln2, g_.skeleton.link(ln2).cog);
+    }
+  }
+}
+
+// --- shoulders -----------------------------------------------------------------------------
+
+void Builder::build_shoulders() {
+  const int N = torso_->n();
+  const auto& cs = g_.shell_sections.at("clavicle");
+  double R = cs.total_thickness / 2 - cs.cortical / 2;  // mid-surface radius
+  FeMaterial cm = convert(g_.material("clavicle_cortical"), "clavicle");
+  {
+    double ro = cs.total_thickness / 2, ri = ro - cs.cortical;
+    double a_cort = M_PI * (ro * ro - ri * ri), a_core = M_PI * ri * ri;
+    cm.rho = (a_cort * cm.rho + a_core * cs.core_density * kDensity) / (2 * M_PI * R * cs.cortical);
+    cm.source += "; density includes the core (shell_sections.csv)";
+  }
+  int cmi = m_.add_material(cm);
+  int env_mat = material("envelope");
+  double env_t = g_.shell_sections.at("envelope").total_thickness;
+  for (const char* s : {"r", "l"}) {
+    std::string side = s;
+    int si = side == "r" ? 0 : 1;
+    // Scapula: ring-2 faces of the posterior upper thorax (levels T2-T6, posterolateral cells).
+    int sp = part("scapula_" + side, ElementKind::Shell, env_mat, "thorax", "shoulder", env_t);
+    std::vector<int> scap;
+    for (int l = 0; l + 1 < torso_->levels(); ++l) {
+      const LayerInfo& L = torso_layers_[static_cast<std::size_t>(l)];
+      double zb = torso_->level(l).z_spine;
+      if (zb < 360 || torso_->level(l + 1).z_spine > 475 || L.region != "thorax") continue;
+      for (int j = N / 2 - 6; j <= N / 2 - 3; ++j) {
+        int jj = side == "l" ? j : N - 1 - j;
+        auto q = torso_->ring_face(l, 2, jj);
+        shell(sp, q);
+        scap.insert(scap.end(), q.begin(), q.end());
+      }
+    }
+    // Clavicle tube from the sternoclavicular to the acromioclavicular joint.
+    Eigen::Vector3d sc = g_.skeleton.link("clavicle_" + side).joint_origin;
+    Eigen::Vector3d ac = g_.skeleton.link("scapula_" + side).joint_origin;
+    Eigen::Vector3d a = (ac - sc).normalized();
+    Eigen::Vector3d e1 = (Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ().dot(a) * a).normalized(), e2 = a.cross(e1);
+    int cp = part("clavicle_" + side, ElementKind::Shell, cmi, "thorax", "shoulder", cs.cortical);
+    const int na = o_.clavicle_around, nl = o_.clavicle_along;
+    std::vector<std::vector<int>> rings;
+    for (int r = 0; r <= nl; ++r) {
+      Eigen::Vector3d c = sc + (ac - sc) * (static_cast<double>(r) / nl);
+      std::vector<int> ids;
+      for (int k = 0; k < na; ++k) {
+        double th = 2 * M_PI * k / na;
+        int n = m_.add_node(c + R * (std::cos(th) * e1 + std::sin(th) * e2));
+        ids.push_back(n);
+        clavicle_nodes_[si].push_back(n);
+      }
+      rings.push_back(ids);
+    }
+    for (int r = 0; r < nl; ++r)
+      for (int k = 0; k < na; ++k) {
+        auto ru = static_cast<std::size_t>(r), kk = static_cast<std::size_t>(k), k1 = static_cast<std::size_t>((k + 1) % na);
+        shell(cp, {rings[ru][kk], rings[ru][k1], rings[ru + 1][k1], rings[ru + 1][kk]});
+      }
+    // Medial end: small rigid body at the SC joint, spring to the nearest sternum node.
+    int sc_main = m_.add_node(sc);
+    rigid("clavicle_medial_" + side, "thorax", sc_main, rings.front());
+    int nearest = -1;
+    double best = 1e30;
+    for (int n : sternum_nodes_) {
+      double d = (m_.nodes[static_cast<std::size_t>(n)] - sc).norm();
+      if (d < best) { best = d; nearest = n; }
+    }
+    spring(spring_part("sternoclavicular"), nearest, sc_main);
+    // Lateral end and the glenohumeral node join the scapula rigid body (AC joint rigid).
+    scap.insert(scap.end(), rings.back().begin(), rings.back().end());
+    int gh = m_.add_node(g_.skeleton.link("humerus_" + side).joint_origin);
+    joint_node_["gh_scapula_" + side] = gh;
+    scap.push_back(gh);
+    rb_nodes_["scapula_" + side] = scap;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : scap) c += m_.nodes[static_cast<std::size_t>(n)];
+    rb_main_at_["scapula_" + side] = c / static_cast<double>(scap.size());
+  }
+}
+
+// --- contacts ------------------------------------------------------------------------------
+
+void Builder::build_contacts() {
+  // Closed torso surface (boundary of the torso hexahedra) for inside/outside tests.
+  auto boundary = hex_boundary_faces(torso_hexes_);
+  TriSurface torso_surface = triangulate(m_.nodes, boundary);
+  auto outside = [&](const std::vector<int>& nodes) {
+    std::vector<Eigen::Vector3d> q;
+    for (int n : nodes) q.push_back(m_.nodes[static_cast<std::size_t>(n)]);
+    auto in = inside_surface(torso_surface, q);
+    std::vector<int> out;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (!in[i]) out.push_back(nodes[i]);
+    return out;
+  };
+  std::vector<std::array<int, 4>> skin = torso_skin_;
+  skin.insert(skin.end(), neck_skin_.begin(), neck_skin_.end());
+  auto add = [&](const std::string& name, int type, std::vector<int> sec, std::vector<std::array<int, 4>> main, double gap) {
+    FeInterface f;
+    f.id = static_cast<int>(m_.interfaces.size()) + 1;
+    f.type = type;
+    f.name = name;
+    std::sort(sec.begin(), sec.end());
+    sec.erase(std::unique(sec.begin(), sec.end()), sec.end());
+    f.secondary = std::move(sec);
+    f.main_segments = std::move(main);
+    f.gap = gap;
+    f.stiffness_factor = 1.0;
+    f.friction = type == 7 ? 0.2 : 0;
+    f.search = type == 2 ? 5.0 : 0;
+    m_.interfaces.push_back(std::move(f));
+  };
+  // Neck base tied to the torso top (non-matching grids).
+  {
+    std::vector<std::array<int, 4>> top;
+    const int l = torso_->levels() - 2;
+    for (int a = 0; a < torso_->m(); ++a)
+      for (int b = 0; b < torso_->m(); ++b) {
+        auto h = torso_->block_cell(l, a, b);
+        top.push_back({h[4], h[5], h[6], h[7]});
+      }
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < torso_->n(); ++j) {
+        auto h = torso_->ring_cell(l, r, j);
+        top.push_back({h[4], h[5], h[6], h[7]});
+      }
+    add("neck_base_tied_to_torso", 2, neck_->level_nodes(0), top, 0);
+  }
+  std::vector<int> arms = arm_env_nodes_[0];
+  arms.insert(arms.end(), arm_env_nodes_[1].begin(), arm_env_nodes_[1].end());
+  add("arm_thorax", 7, outside(arms), skin, 2.0);
+  std::vector<int> clav = clavicle_nodes_[0];
+  clav.insert(clav.end(), clavicle_nodes_[1].begin(), clavicle_nodes_[1].end());
+  add("clavicle_ribcage", 7, clav, cage_segments_, 1.0);
+  add("clavicle_skin", 7, clav, torso_skin_, 1.0);
+  add("head_thorax", 7, outside(head_env_nodes_), torso_skin_, 2.0);
+}
+
+// --- rigid bodies ----------------------------------------------------------------------------
+
+void Builder::finalize_rigid_bodies() {
+  for (auto& [name, nodes] : rb_nodes_) {
+    int main = m_.add_node(rb_main_at_.at(name));
+    std::string seg = name.rfind("vertebra_", 0) == 0 ? "neck" : name.rfind("scapula_", 0) == 0 ? "thorax" : name;
+    rigid(name, seg, main, nodes);
+  }
+}
+
+FeModel Builder::run(ModelLandmarks* lm) {
+  build_torso();
+  build_ribcage();
+  build_pelvis();
+  build_neck();
+  build_shoulders();
+  build_head();
+  build_limbs();
+  build_contacts();
+  finalize_rigid_bodies();
+  // Parts whose every node is in a rigid body are flagged rigid (their elements do not
+  // limit the time step: the solver treats them as rigid).
+  std::vector<bool> in_rb(m_.nodes.size(), false);
+  for (const auto& r : m_.rigid_bodies)
+    for (int n : r.nodes) in_rb[static_cast<std::size_t>(n)] = true;
+  std::vector<int> free_count(m_.parts.size(), 0), total(m_.parts.size(), 0);
+  auto visit = [&](int p, const int* nodes, int k) {
+    for (int i = 0; i < k; ++i) {
+      total[static_cast<std::size_t>(p)]++;
+      if (!in_rb[static_cast<std::size_t>(nodes[i])]) free_count[static_cast<std::size_t>(p)]++;
+    }
+  };
+  for (std::size_t e = 0; e < m_.bricks.size(); ++e) visit(m_.brick_part[e], m_.bricks[e].data(), 8);
+  for (std::size_t e = 0; e < m_.shells.size(); ++e) visit(m_.shell_part[e], m_.shells[e].data(), 4);
+  for (std::size_t e = 0; e < m_.trias.size(); ++e) visit(m_.tria_part[e], m_.trias[e].data(), 3);
+  for (std::size_t p = 0; p < m_.parts.size(); ++p)
+    m_.parts[p].rigid = m_.parts[p].kind != ElementKind::Spring && total[p] > 0 && free_count[p] == 0;
+  if (lm) *lm = lm_;
+  return std::move(m_);
+}
+
+}  // namespace
+
+FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks) {
+  Builder b(g, opt);
+  return b.run(landmarks);
+}
+
+}  // namespace hbm::deckgen

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// FeModel helpers: registration of parts and materials, wave speeds.
+#include "hbm/deckgen/fe_model.hpp"
+
+#include <cmath>
+
+namespace hbm::deckgen {
+
+double FeMaterial::solid_wave_speed() const {
+  // c = sqrt((K + 4G/3) / rho); LAW34 uses the short-time shear modulus.
+  if (law == "LAW34") return std::sqrt((K + 4.0 * G0 / 3.0) / rho);
+  double k = E / (3 * (1 - 2 * nu)), g = E / (2 * (1 + nu));
+  return std::sqrt((k + 4.0 * g / 3.0) / rho);
+}
+
+double FeMaterial::plate_wave_speed() const {
+  // c = sqrt(E / (rho (1 - nu^2))) (plane-stress dilatational wave, shells).
+  if (law == "LAW34") {
+    double e = 9 * K * G0 / (3 * K + G0), n = (3 * K - 2 * G0) / (2 * (3 * K + G0));
+    return std::sqrt(e / (rho * (1 - n * n)));
+  }
+  return std::sqrt(E / (rho * (1 - nu * nu)));
+}
+
+int FeModel::add_material(FeMaterial m) {
+  m.id = static_cast<int>(materials.size()) + 1;
+  materials.push_back(std::move(m));
+  return static_cast<int>(materials.size()) - 1;
+}
+
+int FeModel::add_part(FePart p) {
+  p.id = static_cast<int>(parts.size()) + 1;
+  parts.push_back(std::move(p));
+  return static_cast<int>(parts.size()) - 1;
+}
+
+int FeModel::find_part(const std::string& name) const {
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    if (parts[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int FeModel::find_material(const std::string& name) const {
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace hbm::deckgen
