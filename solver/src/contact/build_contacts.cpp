@@ -252,15 +252,17 @@ void build_rwall(BuildContext& ctx, const Card& c) {
     return;
   }
   p.normal = contact::normalized(p.normal);
-  // Secondary nodes: grnd_ID1, plus nodes with mass within Dsearch in front of the
-  // wall at t = 0, minus grnd_ID2.
+  // Secondary nodes: grnd_ID1, plus the nodes with mass on the free side within Dsearch
+  // of the wall at t = 0 (Dsearch = 0 without grnd_ID1: all of them), minus grnd_ID2.
   std::vector<std::uint8_t> mark(n.n_nodes, 0);
-  if (const auto* g1 = node_group_of(ctx, c, {"grnd_ID1", "grnod_id1", "grnd1", "grnd_id1"}, true))
+  const auto* g1 = node_group_of(ctx, c, {"grnd_ID1", "grnod_id1", "grnd1", "grnd_id1"}, true);
+  if (g1)
     for (Index i : *g1) mark[static_cast<std::size_t>(i)] = 1;
-  if (dsearch > 0)
+  const double reach = dsearch > 0 ? dsearch : (g1 ? -1.0 : std::numeric_limits<double>::infinity());
+  if (reach >= 0)
     for (std::size_t i = 0; i < n.n_nodes; ++i) {
       const double d = dot(contact::V3{n.x0.x[i], n.x0.y[i], n.x0.z[i]} - p.point, p.normal);
-      if (d >= 0 && d <= dsearch && n.mass0[i] > 0) mark[i] = 1;
+      if (d >= 0 && d <= reach && n.mass0[i] > 0) mark[i] = 1;
     }
   if (const auto* g2 = node_group_of(ctx, c, {"grnd_ID2", "grnod_id2", "grnd2", "grnd_id2"}, true))
     for (Index i : *g2) mark[static_cast<std::size_t>(i)] = 0;
