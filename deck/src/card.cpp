@@ -16,8 +16,8 @@ namespace {
 [[noreturn]] void no_field(const Card& c, const Row& line, std::string_view field) {
   std::string msg = "deck: " + std::string(c.keyword()) + " has no field '" + std::string(field) + "'";
   if (line.layout) {
-    msg += " on its line '" + std::string(line.layout->name) + "' (fields:";
-    for (const FieldSpec& f : line.layout->fields) msg += " " + std::string(f.name);
+    msg.append(" on its line '").append(line.layout->name).append("' (fields:");
+    for (const FieldSpec& f : line.layout->fields) msg.append(" ").append(f.name);
     msg += ")";
   }
   throw std::out_of_range(msg);

@@ -131,6 +131,7 @@ class Checker {
       const bool read_card = c.loc.line != 0;
       for (const Row& r : c.lines) {
         if (read_card && r.loc.line == 0) continue;  // absent optional line (or reported missing)
+        if (r.has_error) continue;                   // already reported by the reader
         const SourceLoc loc = r.loc.line ? r.loc : c.loc;
         for (std::size_t i = 0; i < r.layout->fields.size(); ++i) {
           const FieldSpec& f = r.layout->fields[i];
@@ -258,6 +259,7 @@ class Checker {
       if (fam != Family::None) element_block_part(c, fam);
       for (const Row& r : c.lines) {
         if (read_card && r.loc.line == 0) continue;
+        if (r.has_error) continue;
         const SourceLoc loc = r.loc.line ? r.loc : c.loc;
         bool refs_ok = true;
         for (std::size_t i = 0; i < r.layout->fields.size(); ++i) {
@@ -351,9 +353,9 @@ class Checker {
     };
     if (!(lmax > 0) || detj(0, 0, 0) <= tol) {
       sink_.error(loc, 1, card_label(c) + " element " + std::to_string(eid) +
-                              ": degenerate or inverted brick (Jacobian at the centre " + fmt(detj(0, 0, 0)) +
-                              " <= 0; n1-n4 must turn counter-clockwise seen from n5-n8... i.e. "
-                              "(n2-n1)x(n4-n1).(n5-n1) > 0)");
+                              ": inverted or degenerate brick: Jacobian at the centre = " + fmt(detj(0, 0, 0)) +
+                              " (needs (n2-n1)x(n4-n1).(n5-n1) > 0: n1-n4 counter-clockwise seen from the "
+                              "n5-n8 side)");
       return;
     }
     for (int i = 0; i < 8; ++i) {

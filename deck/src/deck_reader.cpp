@@ -298,7 +298,11 @@ class Parser {
       Row& r = c.lines[fixed_read_];
       r.loc = l.loc;
       ++fixed_read_;
-      if (!blank) parse_into(c, r, l);
+      if (!blank) {
+        const std::size_t before = sink_.errors();
+        parse_into(c, r, l);
+        r.has_error = sink_.errors() != before;
+      }
       return;
     }
     if (blank) return;
@@ -329,7 +333,9 @@ class Parser {
     r.first = static_cast<std::uint32_t>(c.values.size());
     for (const FieldSpec& f : ls.fields) c.values.push_back(default_value(f));
     c.lines.push_back(r);
+    const std::size_t before = sink_.errors();
     parse_into(c, c.lines.back(), l);
+    c.lines.back().has_error = sink_.errors() != before;
   }
 
   void field_error(const Card& c, const FieldSpec& f, SourceLoc loc, int col, std::string_view raw,
@@ -397,7 +403,7 @@ class Parser {
         Value& v = c.values[r.first + i];
         parse_field(c, f, v, raw.substr(b, e - b + 1), l.loc, static_cast<int>(col + b + 1));
       }
-      if (covered < t.size()) stray(c, l, t, covered, t.size());
+      if (covered < t.size()) stray(c, l, t, covered, kColumns);
     } else {
       std::string_view t = check_line_chars(l, true);
       std::size_t pos = 0, i = 0;
@@ -420,14 +426,14 @@ class Parser {
     }
   }
 
-  void stray(const Card& c, const SourceLine& l, std::string_view t, std::size_t from, std::size_t to) {
-    to = std::min(to, t.size());
+  void stray(const Card& c, const SourceLine& l, std::string_view t, std::size_t from, std::size_t gap_end) {
+    const std::size_t to = std::min(gap_end, t.size());
     for (std::size_t k = from; k < to; ++k) {
       if (t[k] != ' ') {
         sink_.error(l.loc, static_cast<int>(k + 1),
                     detail::card_label(c) + ": text in column " + std::to_string(k + 1) +
                         ", where this card has no field (columns " + std::to_string(from + 1) + "-" +
-                        std::to_string(to) + " are unused)");
+                        std::to_string(gap_end) + " are unused)");
         return;
       }
     }
@@ -455,20 +461,6 @@ ReadResult read_impl(std::string_view text, std::filesystem::path name, Section 
   Parser p(r.deck, sink);
   p.run(src.lines);
   if (!sink.full()) {
-    // Frame of the starter deck.
-    if (section == Section::Starter) {
-      const bool has_begin = !r.deck.cards.empty() && r.deck.cards.front().spec->keyword == "/BEGIN";
-      bool has_end = false;
-      for (const Card& c : r.deck.cards) has_end = has_end || c.spec->keyword == "/END";
-      if (!has_begin) sink.error(SourceLoc{0, 1}, 1, "missing /BEGIN: the starter deck must start with /BEGIN");
-      if (!has_end) {
-        const SourceLoc last = src.lines.empty() ? SourceLoc{0, 1} : src.lines.back().loc;
-        sink.error(last, 1, "missing /END: the starter deck must end with /END");
-      }
-    } else {
-      const bool has_run = !r.deck.cards.empty() && r.deck.cards.front().spec->keyword == "/RUN";
-      if (!has_run) sink.error(SourceLoc{0, 1}, 1, "missing /RUN: the engine deck must start with /RUN/name/1");
-    }
     detail::check_model(r.deck, sink, false);
   }
   std::stable_sort(r.diagnostics.begin(), r.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {

@@ -9,7 +9,7 @@ namespace hbm::deck {
 
 std::string format(const Diagnostic& d, const Deck& deck) {
   std::string s = deck.where(d.loc);
-  if (d.loc.line != 0) s += ":" + std::to_string(d.column > 0 ? d.column : 1);
+  if (d.loc.line != 0) s.append(":").append(std::to_string(d.column > 0 ? d.column : 1));
   s += d.severity == Severity::Error ? ": error: " : ": warning: ";
   s += d.message;
   std::uint32_t f = d.loc.file;

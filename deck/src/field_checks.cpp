@@ -28,7 +28,9 @@ std::string card_label(const Card& card) {
 std::string value_text(const FieldSpec& f, const Value& v, const Deck& deck) {
   if (f.type == FieldType::Text) {
     if (v.blank) return "blank";
-    return "'" + std::string(deck.text(v)) + "'";
+    std::string q(1, '\'');
+    q.append(deck.text(v)).push_back('\'');
+    return q;
   }
   std::string n = f.type == FieldType::Int ? std::to_string(v.integer) : text::format_number(v.real);
   if (v.blank) return "blank (default " + n + ")";

@@ -34,6 +34,7 @@ struct Row {
   const LineSpec* layout = nullptr;
   SourceLoc loc;
   std::uint32_t first = 0;  // index of the first value in Card::values
+  bool has_error = false;   // the reader reported a lexical error on this line
 };
 
 struct Card {
