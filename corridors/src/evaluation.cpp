@@ -390,7 +390,16 @@ void rate_cross(const CaseDefinition& cd, EvaluationResult& r, RatingResult& rr)
                          " is below the reference's " + fmt(pc.reference_reach) + " " + rr.x_unit +
                          ": force beyond it counts as 0 in the ratings");
   }
-  rr.inside_fraction = inside_fraction(poly, rr.model.x, rr.model.y);
+  // inside fraction over what is rated: the loading branch (points up to the largest
+  // deflection) for "loading", the whole loop for "arc_length"
+  if (rr.def.method == "arc_length") {
+    rr.inside_fraction = inside_fraction(poly, rr.model.x, rr.model.y);
+  } else {
+    const auto imax = static_cast<std::size_t>(std::max_element(rr.model.x.begin(), rr.model.x.end()) - rr.model.x.begin());
+    const std::vector<double> lx(rr.model.x.begin(), rr.model.x.begin() + static_cast<long>(imax) + 1);
+    const std::vector<double> ly(rr.model.y.begin(), rr.model.y.begin() + static_cast<long>(imax) + 1);
+    rr.inside_fraction = inside_fraction(poly, lx, ly);
+  }
 }
 
 CriterionResult evaluate_criterion(const CaseDefinition& cd, const EvaluationResult& r, const CriterionDef& c,
