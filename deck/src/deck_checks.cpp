@@ -7,6 +7,7 @@
 #include "id_index.hpp"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -417,8 +418,41 @@ class Checker {
       else if (kw == "/MAT/LAW34") law34(c);
       else if (kw == "/MAT/LAW36") law36(c);
       else if (kw == "/BEGIN") units(c);
+      else if (starts_with(kw, "/TH/")) time_history(c);
+      else if (kw == "/RWALL/PLANE") rwall(c);
       else if (starts_with(kw, "/GRNOD/") && c.n_rows() == 0)
         sink_.warning(c.loc, 1, card_label(c) + ": empty group");
+    }
+  }
+
+  // /TH/*: variable names are single words (letters, digits, _), at least one object.
+  void time_history(const Card& c) {
+    if (c.n_name_rows() == 0) sink_.error(c.loc, 1, card_label(c) + ": no output variable line (e.g. DEF)");
+    for (std::size_t i = 0; i < c.n_name_rows(); ++i) {
+      const Row& r = c.name_row(i);
+      if (r.has_error) continue;
+      for (std::size_t f = 0; f < r.layout->fields.size(); ++f) {
+        const Value& v = c.values[r.first + f];
+        if (v.blank) continue;
+        const std::string_view t = deck_.text(v);
+        bool ok = !t.empty() && std::isalpha(static_cast<unsigned char>(t[0]));
+        for (char ch : t) ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+        if (!ok) {
+          const FieldSpec& fs = r.layout->fields[f];
+          sink_.error(r.loc.line ? r.loc : c.loc, col_of(fs),
+                      field_prefix(c, fs, v, deck_) + "a variable name is one word of letters, digits and _");
+        }
+      }
+    }
+    if (c.n_rows() == 0) sink_.error(c.loc, 1, card_label(c) + ": no objects listed");
+  }
+
+  void rwall(const Card& c) {
+    const double dx = c.real(3, "XM1") - c.real(2, "XM"), dy = c.real(3, "YM1") - c.real(2, "YM"),
+                 dz = c.real(3, "ZM1") - c.real(2, "ZM");
+    if (!(dx * dx + dy * dy + dz * dz > 0)) {
+      const Row& r = c.lines[3];
+      sink_.error(r.loc.line ? r.loc : c.loc, 1, card_label(c) + ": M1 equals M, the wall normal M->M1 is undefined");
     }
   }
 
