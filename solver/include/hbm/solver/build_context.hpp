@@ -63,6 +63,8 @@ class BuildContext {
   void error(const hbm::deck::Card& card, const hbm::deck::Row& row, std::string_view field,
              std::string_view message);
   void warning(const hbm::deck::Card& card, std::string_view message);
+  // An error not tied to one card (e.g. a required card missing), recorded once.
+  void messages_add_error_once(std::string message);
   bool ok() const { return n_errors_ == 0; }
   const std::vector<std::string>& messages() const { return messages_; }
 

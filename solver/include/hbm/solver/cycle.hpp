@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hbm::solver {
 
@@ -33,12 +35,26 @@ enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass
 
 struct CycleState {
   StepContext step;
+  double dt_mid = 0.0;  // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2, the velocity-update step
   GlobalEnergies energies;
   PhaseTimes times;
   StopReason stop = StopReason::None;
   std::string stop_message;  // element / part / time or parts that took the mass
   std::vector<GroupStepResult> group_results;  // one per group, this cycle
+  // Where /DT/NODA/CST put mass: per group, per element (allocated on first use) [mass].
+  std::vector<std::vector<double>> element_added_mass;
+  std::vector<std::string> events;  // element deletions etc., printed by the run loop
+  Index dt_group = kNoIndex;        // group and element limiting the step (element mode)
+  Index dt_element = kNoIndex;
+  // Half-step kinetic energies of the previous cycle (-1: not yet known) [energy].
+  double kinetic_half_prev = -1.0, rotational_half_prev = 0.0;
+  // Scratch for deterministic nodal reductions (one slot per node chunk).
+  std::vector<double> chunk_scratch;
 };
+
+// Kinetic energies 0.5 m |v|^2 and 0.5 I |omega|^2 of the current (half-step)
+// velocities, rigid-body secondaries excluded; deterministic sum.
+std::pair<double, double> half_step_kinetic(const NodalState& n, std::vector<double>& scratch);
 
 // Phases (formulas in cycle.cpp):
 void compute_element_forces(Model& m, CycleState& c);   // groups -> slot buffers

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// /TH/... cards -> ThGroups (see th_requests.hpp for the variables).
+#include "core/th_requests.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace hbm::solver {
+
+namespace {
+
+using hbm::deck::Dimension;
+
+std::string upper_trim(std::string s) {
+  const auto b = s.find_first_not_of(' ');
+  if (b == std::string::npos) return {};
+  s = s.substr(b, s.find_last_not_of(' ') - b + 1);
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::optional<ThProbe> node_probe(const Model& m, Index node, const std::string& title, const std::string& var) {
+  const NodalState* n = &m.nodes;
+  const Model* mp = &m;
+  const auto i = static_cast<std::size_t>(node);
+  ThProbe p{"node", n->user_id[i], title, var, Dimension::Length, {}};
+  static const std::string axes = "XYZ";
+  if (var.size() == 2 && axes.find(var[1]) != std::string::npos) {
+    const int d = static_cast<int>(axes.find(var[1]));
+    auto pick = [d](const Vec3Soa& v, std::size_t k) { return d == 0 ? v.x[k] : d == 1 ? v.y[k] : v.z[k]; };
+    if (var[0] == 'D') {
+      p.read = [n, i, pick] { return pick(n->x, i) - pick(n->x0, i); };
+      return p;
+    }
+    if (var[0] == 'V') {
+      p.unit = Dimension::Velocity;
+      p.read = [n, i, pick, mp] { return pick(n->v, i) - 0.5 * mp->dt_mid * pick(n->a, i); };
+      return p;
+    }
+    if (var[0] == 'A') {
+      p.unit = Dimension::Acceleration;
+      p.read = [n, i, pick] { return pick(n->a, i); };
+      return p;
+    }
+  }
+  if (var.size() == 1 && axes.find(var[0]) != std::string::npos) {
+    const int d = static_cast<int>(axes.find(var[0]));
+    p.read = [n, i, d] { return d == 0 ? n->x.x[i] : d == 1 ? n->x.y[i] : n->x.z[i]; };
+    return p;
+  }
+  return std::nullopt;
+}
+
+std::optional<ThProbe> part_probe(const Model& m, Index part, const std::string& var) {
+  const Part& pt = m.parts[static_cast<std::size_t>(part)];
+  ThProbe p{"part", pt.id, pt.title, var, Dimension::Energy, {}};
+  std::vector<const ElementGroup*> groups;
+  for (const auto& g : m.groups)
+    if (g->part == part) groups.push_back(g.get());
+  const Model* mp = &m;
+  const Part* pp = &pt;
+  if (var == "IE") {
+    p.read = [groups] { double s = 0; for (auto* g : groups) s += g->energy.internal; return s; };
+  } else if (var == "HE") {
+    p.read = [groups] { double s = 0; for (auto* g : groups) s += g->energy.hourglass; return s; };
+  } else if (var == "KE") {
+    // Element-lumped: each element node carries m_node / (number of element slots at it).
+    p.read = [groups, mp] {
+      const NodalState& n = mp->nodes;
+      double s = 0;
+      for (auto* g : groups)
+        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
+          const auto i = static_cast<std::size_t>(g->connectivity[k]);
+          const auto share = static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
+          const double vx = n.v.x[i] - 0.5 * mp->dt_mid * n.a.x[i], vy = n.v.y[i] - 0.5 * mp->dt_mid * n.a.y[i],
+                       vz = n.v.z[i] - 0.5 * mp->dt_mid * n.a.z[i];
+          s += 0.5 * n.mass[i] / share * (vx * vx + vy * vy + vz * vz);
+        }
+      return s;
+    };
+  } else if (var == "AM") {
+    p.unit = Dimension::Mass;
+    p.read = [pp] { return pp->added_mass; };
+  } else if (var == "M") {
+    p.unit = Dimension::Mass;
+    p.read = [pp] { return pp->mass0 + pp->added_mass; };
+  } else if (var == "ER") {
+    p.unit = Dimension::Count;
+    p.read = [groups] { double s = 0; for (auto* g : groups) s += static_cast<double>(g->n_eroded); return s; };
+  } else {
+    return std::nullopt;
+  }
+  return p;
+}
+
+ThKind kind_of(std::string_view kw) {
+  if (kw == "/TH/NODE") return ThKind::Node;
+  if (kw == "/TH/PART") return ThKind::Part;
+  if (kw == "/TH/SPRING") return ThKind::Spring;
+  if (kw == "/TH/INTER") return ThKind::Inter;
+  if (kw == "/TH/RBODY") return ThKind::Rbody;
+  return ThKind::Rwall;
+}
+
+}  // namespace
+
+void build_th_groups(BuildContext& ctx) {
+  Model& m = ctx.model();
+  const hbm::deck::Deck& d = ctx.starter();
+  for (std::string_view kw : {"/TH/NODE", "/TH/PART", "/TH/SPRING", "/TH/INTER", "/TH/RBODY", "/TH/RWALL"}) {
+    ctx.claim(kw);
+    const ThKind kind = kind_of(kw);
+    for (const hbm::deck::Card* c : d.cards_of(kw)) {
+      ThGroup g;
+      g.keyword = std::string(kw);
+      g.id = c->id;
+      g.title = c->title;
+      std::vector<std::string> vars;
+      for (std::size_t r = 0; r < c->n_name_rows(); ++r)
+        for (int k = 1; k <= 10; ++k) {
+          const std::string v = upper_trim(d.text(*c, c->name_row(r), "var" + std::to_string(k)));
+          if (!v.empty()) vars.push_back(v);
+        }
+      auto expand = [&](const std::vector<std::string>& defaults) {
+        std::vector<std::string> out;
+        for (const auto& v : vars) {
+          if (v == "DEF")
+            out.insert(out.end(), defaults.begin(), defaults.end());
+          else
+            out.push_back(v);
+        }
+        return out;
+      };
+      if (kind == ThKind::Node) {
+        const auto list = expand({"DX", "DY", "DZ", "VX", "VY", "VZ", "AX", "AY", "AZ"});
+        for (std::size_t r = 0; r < c->n_rows(); ++r) {
+          const auto& row = c->row(r);
+          const Index node = ctx.require_node(*c, row, "node_id");
+          if (node == kNoIndex) continue;
+          std::string name = d.text(*c, row, "name");
+          name = name.substr(0, name.find_last_not_of(' ') + 1);
+          name = name.substr(std::min(name.size(), name.find_first_not_of(' ')));
+          for (const auto& v : list) {
+            auto p = node_probe(m, node, name, v);
+            if (p) g.columns.push_back(std::move(*p));
+            else ctx.error(*c, "unknown /TH/NODE variable '" + v + "'");
+          }
+        }
+      } else {
+        for (std::size_t r = 0; r < c->n_rows(); ++r)
+          for (int k = 1; k <= 10; ++k) {
+            const std::string f = "id" + std::to_string(k);
+            const std::int64_t id = c->integer(c->row(r), f);
+            if (id == 0) continue;
+            if (kind == ThKind::Part) {
+              const Index part = ctx.part_index(id);
+              if (part == kNoIndex) {
+                ctx.error(*c, c->row(r), f, "no part " + std::to_string(id));
+                continue;
+              }
+              for (const auto& v : expand({"IE", "KE", "HE", "AM"})) {
+                auto p = part_probe(m, part, v);
+                if (p) g.columns.push_back(std::move(*p));
+                else ctx.error(*c, "unknown /TH/PART variable '" + v + "'");
+              }
+              continue;
+            }
+            // Other kinds: the first owner of the object answers.
+            std::vector<const ThSource*> owners;
+            for (const auto& x : m.groups) owners.push_back(x.get());
+            for (const auto& x : m.interactions) owners.push_back(x.get());
+            for (const auto& x : m.constraints) owners.push_back(x.get());
+            const ThSource* owner = nullptr;
+            for (const ThSource* o : owners)
+              if (o->owns_th_object(kind, id)) {
+                owner = o;
+                break;
+              }
+            if (!owner) {
+              ctx.error(*c, c->row(r), f, "no object " + std::to_string(id) + " for " + std::string(kw));
+              continue;
+            }
+            std::vector<std::string> list;
+            for (const auto& v : vars) {
+              if (v == "DEF") {
+                const auto defs = owner->th_default_variables(kind);
+                list.insert(list.end(), defs.begin(), defs.end());
+              } else {
+                list.push_back(v);
+              }
+            }
+            for (const auto& v : list) {
+              auto p = owner->th_probe(kind, id, v);
+              if (p) g.columns.push_back(std::move(*p));
+              else ctx.error(*c, "unknown " + std::string(kw) + " variable '" + v + "' for object " + std::to_string(id));
+            }
+          }
+      }
+      m.th_groups.push_back(std::move(g));
+    }
+  }
+}
+
+}  // namespace hbm::solver

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Builder of solid groups: /BRICK and /TETRA4 cards, one group per (keyword, part),
+// material LAW1/2/34/36 from the part, hourglass and bulk viscosity from /PROP/TYPE14.
+// Lumped mass rho V0 / n per element node. Registered in solver/src/build/builders.def.
+#include "hbm/solver/build_context.hpp"
+#include "solid/solid_group.hpp"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace hbm::solver {
+
+namespace {
+
+// Solid material from the part's /MAT card; false (error recorded) if unusable.
+bool read_solid_material(BuildContext& ctx, const hbm::deck::Card& m, SolidMaterial& out) {
+  const std::string_view kw = m.keyword();
+  out.id = m.id;
+  out.rho = m.real(0, "rho");
+  if (kw == "/MAT/LAW1") {
+    out.law = SolidLaw::Elastic;
+    out.set_elastic(m.real(1, "E"), m.real(1, "nu"));
+  } else if (kw == "/MAT/LAW2") {
+    out.law = SolidLaw::JohnsonCook;
+    out.set_elastic(m.real(1, "E"), m.real(1, "nu"));
+    if (m.integer(1, "Iflag") != 0) {
+      ctx.error(m, "Iflag != 0 (yield/UTS input) is not supported; give a, b, n");
+      return false;
+    }
+    auto& pl = out.plasticity;
+    pl.kind = PlasticityLaw::Kind::JohnsonCook;
+    pl.jc.a = m.real(2, "a");
+    pl.jc.b = m.real(2, "b");
+    pl.jc.n = m.real(2, "n");
+    const double epm = m.real(2, "EPS_p_max");
+    pl.eps_p_max = epm > 0 ? epm : std::numeric_limits<double>::infinity();
+    const double smax = m.real(2, "SIG_max0");
+    pl.jc.sig_max = smax > 0 ? smax : std::numeric_limits<double>::infinity();
+    pl.jc.c = m.real(3, "c");
+    pl.jc.eps_dot0 = m.real(3, "EPS_DOT_0");
+    if (pl.jc.c > 0 && !(pl.jc.eps_dot0 > 0)) {
+      ctx.error(m, "c > 0 needs EPS_DOT_0 > 0");
+      return false;
+    }
+  } else if (kw == "/MAT/LAW34") {
+    out.law = SolidLaw::Viscoelastic;
+    const double G0 = m.real(2, "G0"), Ginf = m.real(2, "Ginf");
+    if (Ginf > G0) {
+      ctx.error(m, "Ginf must not exceed G0");
+      return false;
+    }
+    if (m.real(3, "P0") != 0.0) {
+      ctx.error(m, "foam air pressure P0 != 0 is not supported (tissue: 0)");
+      return false;
+    }
+    out.set_viscoelastic(m.real(1, "K"), G0, Ginf, m.real(2, "beta"));
+  } else if (kw == "/MAT/LAW36") {
+    out.law = SolidLaw::Tabulated;
+    out.set_elastic(m.real(1, "E"), m.real(1, "nu"));
+    auto& pl = out.plasticity;
+    pl.kind = PlasticityLaw::Kind::Tabulated;
+    const double epm = m.real(1, "EPS_p_max");
+    pl.eps_p_max = epm > 0 ? epm : std::numeric_limits<double>::infinity();
+    const auto n = m.integer(2, "N_funct");
+    for (int k = 1; k <= n; ++k) {
+      const std::string f = "fct_ID" + std::to_string(k);
+      const std::int64_t fid = m.integer(4, f);
+      const FunctionCurve* fc = ctx.function(fid);
+      if (!fc) {
+        ctx.error(m, m.lines.size() > 4 ? m.lines[4] : m.lines.back(), f, "no function " + std::to_string(fid));
+        return false;
+      }
+      pl.tab.curves.push_back(fc);
+      pl.tab.scales.push_back(m.real(5, "Fscale" + std::to_string(k)));
+      pl.tab.rates.push_back(m.real(6, "EPS_dot" + std::to_string(k)));
+    }
+    for (std::size_t k = 1; k < pl.tab.rates.size(); ++k)
+      if (!(pl.tab.rates[k] > pl.tab.rates[k - 1])) {
+        ctx.error(m, "strain rates EPS_dot1..N must increase");
+        return false;
+      }
+  } else {
+    ctx.error(m, std::string("material ") + std::string(kw) + " is not supported on solid elements (LAW1, LAW2, LAW34, LAW36)");
+    return false;
+  }
+  return true;
+}
+
+bool read_solid_property(BuildContext& ctx, const Part& part, SolidGroup& g) {
+  g.hourglass = g.material.viscoelastic() ? HourglassForm::Physical : HourglassForm::Viscous;
+  const hbm::deck::Card* p = part.prop_card;
+  if (!p) return true;
+  if (p->keyword() != "/PROP/TYPE14") {
+    ctx.error(*part.part_card, std::string("property ") + std::string(p->keyword()) + " of part " +
+                                   std::to_string(part.id) + " is not a solid property (/PROP/TYPE14)");
+    return false;
+  }
+  const auto isolid = p->integer(0, "Isolid");
+  switch (isolid) {
+    case 0: break;
+    case 1: g.hourglass = HourglassForm::Viscous; break;
+    case 2: g.hourglass = HourglassForm::Stiffness; break;
+    case 24: g.hourglass = HourglassForm::Physical; break;
+    default:
+      ctx.error(*p, p->lines.at(0), "Isolid",
+                "Isolid = " + std::to_string(isolid) + " not supported (0, 1 viscous, 2 stiffness, 24 physical)");
+      return false;
+  }
+  g.qa = p->real(1, "qa");
+  g.qb = p->real(1, "qb");
+  g.hourglass_coef = p->real(1, "h");
+  return true;
+}
+
+}  // namespace
+
+void build_solid_groups(BuildContext& ctx) {
+  for (std::string_view kw : {"/BRICK", "/TETRA4"}) {
+    ctx.claim(kw);
+    const int npe = kw == "/BRICK" ? 8 : 4;
+    // Cards of one part are merged into one group, parts in order of first appearance.
+    std::map<std::int64_t, std::vector<const hbm::deck::Card*>> by_part;
+    std::vector<std::int64_t> order;
+    for (const hbm::deck::Card* c : ctx.starter().cards_of(kw)) {
+      if (!by_part.count(c->id)) order.push_back(c->id);
+      by_part[c->id].push_back(c);
+    }
+    for (std::int64_t part_id : order) {
+      const auto& cards = by_part[part_id];
+      const Index part = ctx.part_index(part_id);
+      if (part == kNoIndex) {
+        ctx.error(*cards.front(), "no part " + std::to_string(part_id));
+        continue;
+      }
+      auto g = std::make_unique<SolidGroup>();
+      g->keyword = std::string(kw);
+      g->part = part;
+      g->nodes_per_element = static_cast<std::size_t>(npe);
+      const Part& p = ctx.part(part);
+      if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
+      if (!read_solid_property(ctx, p, *g)) continue;
+      bool ok = true;
+      for (const hbm::deck::Card* c : cards)
+        for (std::size_t r = 0; r < c->n_rows(); ++r) {
+          const auto& row = c->row(r);
+          g->element_id.push_back(c->integer(row, "id"));
+          for (int i = 0; i < npe; ++i) {
+            const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
+            ok = ok && n != kNoIndex;
+            g->connectivity.push_back(n);
+          }
+        }
+      if (!ok) continue;
+      g->n_elements = g->element_id.size();
+      const Index bad = g->initialize(ctx.nodes());
+      if (bad != kNoIndex) {
+        ctx.error(*cards.front(), "element " + std::to_string(g->element_id[static_cast<std::size_t>(bad)]) +
+                                      " has a non-positive volume (node order?)");
+        continue;
+      }
+      double part_mass = 0.0;
+      for (std::size_t e = 0; e < g->n_elements; ++e) {
+        part_mass += g->mass[e];
+        for (int i = 0; i < npe; ++i) ctx.add_nodal_mass(g->connectivity[e * npe + i], g->mass[e] / npe);
+      }
+      ctx.add_part_mass(part, part_mass);
+      ctx.add_group(std::move(g));
+    }
+  }
+}
+
+}  // namespace hbm::solver
