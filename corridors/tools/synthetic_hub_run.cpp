@@ -18,7 +18,8 @@
 // left out so that the solution stays closed-form.
 //
 // Output (units in the headers, mm, ms, kg, kN as the solver writes them):
-//   impactor.csv  time, rbody 900 impactor DX/VX/AX, contact force (impactor moving along -X)
+//   impactor.csv  time, rbody 900 impactor DX/VX/AX, contact force (impactor moving along -X;
+//                 --axis Y writes DY/VY/AY for the lateral and oblique cases)
 //   nodes.csv     time, node 3208 T8 DX, node 1201 sternum DX
 //   global.csv    time, kinetic, internal, damping energy, energy error
 // With --corridor-out it also writes a corridor CSV built from the model's own closed-form
@@ -69,6 +70,10 @@ int main(int argc, char** argv) {
   app.add_option("--t-end", t_end_ms, "end time [ms]");
   app.add_option("--t-contact", t_contact_ms, "time of first contact [ms]");
   app.add_option("--corridor-out", corridor_out, "also write a corridor CSV made from the model's own curve");
+  std::string axis = "X";
+  app.add_option("--axis", axis, "global axis the impactor travels along, in the negative direction (X: frontal "
+                                 "cases, Y: the Viano lateral/oblique cases)")
+      ->check(CLI::IsMember({"X", "Y", "Z"}));
   CLI11_PARSE(app, argc, argv);
   if (!(hm.zeta() < 1.0)) {
     std::cerr << "hbm-corridors-synthetic-hub: error: damping ratio " << hm.zeta() << " >= 1 (closed form is for the underdamped case)\n";
@@ -77,9 +82,9 @@ int main(int argc, char** argv) {
   fs::create_directories(out_dir);
   std::ofstream imp(fs::path(out_dir) / "impactor.csv"), nod(fs::path(out_dir) / "nodes.csv"),
       glo(fs::path(out_dir) / "global.csv");
-  imp << "time [ms],rbody 900 impactor DX [mm],rbody 900 impactor VX [mm/ms],rbody 900 impactor AX [mm/ms2],"
-         "contact 5 impactor-thorax FX [kN]\n";
-  nod << "time [ms],node 3208 T8 DX [mm],node 1201 sternum DX [mm]\n";
+  imp << "time [ms],rbody 900 impactor D" << axis << " [mm],rbody 900 impactor V" << axis << " [mm/ms],rbody 900 impactor A"
+      << axis << " [mm/ms2],contact 5 impactor-thorax F" << axis << " [kN]\n";
+  nod << "time [ms],node 3208 T8 D" << axis << " [mm],node 1201 sternum D" << axis << " [mm]\n";
   glo << "time [ms],kinetic energy [J],internal energy [J],damping energy [J],energy error [-]\n";
   const double mt = hm.m + hm.big_m, vc = hm.m * hm.v0 / mt;
   bool separated = false;
