@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "hbm/corridors/input_error.hpp"
@@ -58,7 +59,10 @@ public:
     }
     if (!n->is_number())
       throw InputError(file_, line_of(key), context_ + ": key '" + key + "' must be a number");
-    return *n->value<double>();
+    const double v = *n->value<double>();
+    if (!std::isfinite(v))
+      throw InputError(file_, line_of(key), context_ + ": key '" + key + "' must be finite (not nan or inf)");
+    return v;
   }
 
   bool boolean(const char* key, bool fallback) const {
@@ -172,7 +176,10 @@ RatingDef read_rating(const TableReader& r, const std::filesystem::path& case_di
   d.y_signal = r.str("signal", "", true);
   d.x_signal = r.str("x_signal", "");
   d.method = r.str("method", "loading");
-  d.points = static_cast<std::size_t>(r.num("points", 500.0));
+  const double points = r.num("points", 500.0);
+  if (!(points >= 10.0 && points <= 20000.0) || points != std::floor(points))
+    throw InputError(r.file(), r.line_of("points"), "rating '" + d.name + "': points must be a whole number in [10, 20000]");
+  d.points = static_cast<std::size_t>(points);
   d.x_label = r.str("x_label", d.kind == "time" ? "Time" : "Deflection");
   d.y_label = r.str("y_label", "Force");
   if (d.kind != "time" && d.kind != "cross")
@@ -183,8 +190,8 @@ RatingDef read_rating(const TableReader& r, const std::filesystem::path& case_di
     throw InputError(r.file(), r.line_of("x_signal"), "rating '" + d.name + "': x_signal is only for kind = cross");
   if (d.method != "loading" && d.method != "arc_length")
     throw InputError(r.file(), r.line_of("method"), "rating '" + d.name + "': method = '" + d.method + "' (use loading or arc_length)");
-  if (d.points < 10 || d.points > 100000)
-    throw InputError(r.file(), r.line_of("points"), "rating '" + d.name + "': points must be in [10, 100000]");
+  if (d.points < 10 || d.points > 20000)
+    throw InputError(r.file(), r.line_of("points"), "rating '" + d.name + "': points must be in [10, 20000]");
   if (d.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") != std::string::npos)
     throw InputError(r.file(), r.line_of("name"), "rating name '" + d.name + "' may hold only letters, digits, '_', '-', '.' (it names the plot files)");
   const toml::table* ct = r.table("corridor");
@@ -293,8 +300,9 @@ CaseDefinition load_case(const std::filesystem::path& path) {
     r.only({"rate_hz", "time_unit"});
     cd.rate_hz = r.num("rate_hz", 10000.0);
     cd.time_unit = r.str("time_unit", "ms");
-    if (!(cd.rate_hz >= 100.0 && cd.rate_hz <= 1e7))
-      throw InputError(cd.path, r.line_of("rate_hz"), "[processing] rate_hz must be in [100, 1e7] Hz");
+    // upper bound keeps the ratings' dynamic time warping (N x 0.2 N) within memory
+    if (!(cd.rate_hz >= 100.0 && cd.rate_hz <= 1e5))
+      throw InputError(cd.path, r.line_of("rate_hz"), "[processing] rate_hz must be in [100, 100000] Hz (ISO/TS 18571 uses 10000)");
     check_unit(cd.path, r.line_of("time_unit"), cd.time_unit, "[processing] time_unit");
     if (unit_dimension(cd.time_unit) != "time")
       throw InputError(cd.path, r.line_of("time_unit"), "[processing] time_unit '" + cd.time_unit + "' is not a time unit");

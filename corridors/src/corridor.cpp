@@ -97,7 +97,7 @@ Corridor load_corridor(const CorridorSpec& spec) {
     for (auto [idx, out] : {std::pair<long, double*>{xi, &xv}, std::pair<long, double*>{yi, &yv}}) {
       const std::string& s = f[static_cast<std::size_t>(idx)];
       auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), *out);
-      if (ec != std::errc() || p != s.data() + s.size())
+      if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(*out))
         throw InputError(c.file, line_no, "'" + s + "' in column '" + header[static_cast<std::size_t>(idx)] +
                                               "' is not a number");
     }

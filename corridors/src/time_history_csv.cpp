@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 
 #include "hbm/corridors/input_error.hpp"
@@ -49,7 +50,7 @@ bool parse_double(const std::string& s, double& v) {
   const char* e = s.data() + s.size();
   if (*b == '+') ++b;
   auto [ptr, ec] = std::from_chars(b, e, v);
-  return ec == std::errc() && ptr == e;
+  return ec == std::errc() && ptr == e && std::isfinite(v);  // "nan" and "inf" are refused
 }
 
 }  // namespace
@@ -118,7 +119,7 @@ TimeHistoryTable read_time_history_csv(const std::filesystem::path& path) {
       if (!parse_double(fields[i], v))
         throw InputError(t.path, line_no,
                          "column " + std::to_string(i + 1) + " ('" + t.headers[i] +
-                         "'): '" + fields[i] + "' is not a number");
+                         "'): '" + fields[i] + "' is not a finite number");
       t.columns[i].push_back(v);
     }
     const auto& tcol = t.columns[t.time_column];
