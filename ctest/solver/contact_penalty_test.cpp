@@ -66,6 +66,7 @@ TEST(ContactPenalty, BounceOnFixedFaceMatchesSpringSolution) {
   EXPECT_NEAR(n.v.z[node], v0, 1e-3 * v0);
   EXPECT_NEAR(n.v.x[node], 0.0, 1e-12);
   EXPECT_NEAR(-c.work(), 0.0, 1e-3 * e0);  // energy given back
+  EXPECT_NEAR(-c.trapezoid_work(), 0.0, 1e-3 * e0);
   EXPECT_NEAR(kinetic(n), e0, 1e-3 * e0);
 }
 
@@ -178,6 +179,7 @@ TEST(ContactPenalty, DampingDissipatesWhatTheNodeLoses) {
   EXPECT_LT(e, 0.80);
   // Contact energy (-work) equals the kinetic energy lost (balance, 1e-3).
   EXPECT_NEAR(-c.work(), e0 - e1, 1e-3 * e0);
+  EXPECT_NEAR(-c.trapezoid_work(), e0 - e1, 1e-3 * e0);
   EXPECT_NEAR(c.damping_energy(), e0 - e1, 1e-3 * e0);
 }
 
@@ -261,11 +263,11 @@ TEST(ContactPenalty, ResortOnlyAfterHalfMarginDisplacement) {
   p.margin = 0.4;
   PenaltyContact c(s, {node}, p, n);
   EXPECT_EQ(c.n_sorts(), 1u);
-  EXPECT_EQ(c.n_candidates(), 0u);  // 3.0 away: beyond gap + margin + depth
+  EXPECT_EQ(c.n_candidates(), 0u);  // 3.0 above: beyond gap + margin
   n.x.z[node] = 3.0 - 0.19;         // moved less than margin / 2
   c.add_forces(n, 0, 0);
   EXPECT_EQ(c.n_sorts(), 1u);
-  n.x.z[node] = 1.2;                // moved more: re-sort, now a candidate
+  n.x.z[node] = 0.45;               // moved more: re-sort, within gap + margin: candidate
   c.add_forces(n, 0, 0);
   EXPECT_EQ(c.n_sorts(), 2u);
   EXPECT_EQ(c.n_candidates(), 1u);

@@ -247,6 +247,7 @@ void PenaltyContact::update_segment_cache(const NodalState& nodes) {
 void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   resultant_ = {};
   elastic_energy_ = 0;
+  critical_step_ = std::numeric_limits<double>::infinity();
   // Work of last cycle's forces over v^{n-1/2} (first half of the trapezoid).
   double power_prev = 0;
   for (std::size_t i = 0; i < secondary_.size(); ++i)
@@ -406,6 +407,21 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     ++resultant_.n_active;
   }
   work_ += 0.5 * dt * (power_prev + power_now);
+  // Nodal step of the nodes in contact, once all pairs added their stiffness.
+  if (resultant_.n_active > 0) {
+    auto node_step = [&](Index n) {
+      const auto k = static_cast<std::size_t>(n);
+      if (nodes.stiffness[k] > 0 && nodes.mass[k] > 0)
+        critical_step_ = std::min(critical_step_, std::sqrt(2.0 * nodes.mass[k] / nodes.stiffness[k]));
+    };
+    for (std::size_t i = 0; i < secondary_.size(); ++i) {
+      if (prev_segment_[i] == kNoIndex) continue;
+      node_step(secondary_[i]);
+      const auto& sg = surf_.nodes[static_cast<std::size_t>(prev_segment_[i])];
+      for (std::size_t k = 0; k < 4; ++k)
+        if (prev_weight_[i][k] > 0) node_step(sg[k]);
+    }
+  }
 }
 
 }  // namespace hbm::solver::contact

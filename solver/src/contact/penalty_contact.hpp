@@ -74,10 +74,15 @@ class PenaltyContact {
   // the first cycle): friction slip and dissipation use v^{n-1/2} dt_prev.
   void add_forces(NodalState& nodes, double time, double dt_prev);
 
-  // Cumulative work of the contact forces on the nodes through t^n, trapezoidal:
-  // W += 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt_prev (per pair: f . (v_s - sum N_i v_i)).
-  // In a conservative contact -W equals energy() up to the scheme's O(dt^2) error.
-  double work() const { return work_; }
+  // Work of the contact forces on the nodes through t^n [energy]. The normal law is
+  // conservative with potential U(p), so its work is exactly -U(p^n) (no quadrature
+  // error at contact onset and release, where a trapezoid over a force jump would
+  // leave a residue); friction and damping add their dissipation increments:
+  //   W = -(U(p^n) + E_friction + E_damping) = -energy().
+  double work() const { return -energy(); }
+  // The same work integrated by the trapezoid 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt_prev
+  // (diagnostic: tends to work() as the step goes to zero).
+  double trapezoid_work() const { return work_; }
 
   // Energies [energy]: elastic (stored in the penalty springs now), friction (stored in
   // the tangential springs + dissipated so far), damping (dissipated so far).
@@ -86,6 +91,10 @@ class PenaltyContact {
   double damping_energy() const { return damping_dissipated_; }
   double energy() const { return elastic_energy() + friction_energy() + damping_energy(); }
   const ContactResultant& resultant() const { return resultant_; }
+  // Smallest nodal step sqrt(2 m / k_n) over the nodes in contact this cycle, with k_n
+  // the assembled stiffness including the contact's (infinity if none) [time]. The
+  // engine's element-step mode takes it into account (times Tsca).
+  double critical_step() const { return critical_step_; }
 
   // Search statistics (bench, tests).
   std::size_t n_sorts() const { return n_sorts_; }
@@ -139,6 +148,7 @@ class PenaltyContact {
   double elastic_energy_ = 0, friction_stored_ = 0, friction_dissipated_ = 0;
   double damping_dissipated_ = 0;
   double work_ = 0;
+  double critical_step_ = std::numeric_limits<double>::infinity();
   ContactResultant resultant_;
 
   // Last cycle's force on each secondary node, its segment and weights (work update).

@@ -26,6 +26,7 @@ class Type7Interface : public Interaction {
     kernel_.add_forces(nodes, step.time, step.dt_prev);
   }
   double work() const override { return kernel_.work(); }
+  double critical_step() const override { return kernel_.critical_step(); }
 
   std::optional<ThProbe> th_probe(ThKind kind, std::int64_t id,
                                   std::string_view variable) const override;
