@@ -23,6 +23,12 @@ std::filesystem::path engine_deck_of(const std::filesystem::path& starter) {
 }  // namespace
 
 RunResult run_deck(const std::filesystem::path& starter, const RunOptions& options, std::ostream& err) {
+  Model model;
+  return run_deck(starter, options, err, model);
+}
+
+RunResult run_deck(const std::filesystem::path& starter, const RunOptions& options, std::ostream& err,
+                   Model& model) {
   RunResult res;
   res.exit_code = 1;
   const std::filesystem::path engine = engine_deck_of(starter);
@@ -49,7 +55,6 @@ RunResult run_deck(const std::filesystem::path& starter, const RunOptions& optio
     res.message = "deck errors";
     return res;
   }
-  Model model;
   std::vector<std::string> messages;
   const bool ok = build_model(s.deck, e.deck, model, messages);
   for (const auto& m : messages) err << m << "\n";

@@ -23,7 +23,7 @@ template <class F>
 double node_sum(std::size_t n, std::vector<double>& scratch, F&& per_node) {
   const std::size_t nch = n_chunks(n);
   scratch.assign(nch, 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nch > 8)
   for (std::size_t ch = 0; ch < nch; ++ch) {
     double s = 0.0;
     const std::size_t end = std::min(n, (ch + 1) * kChunk);
@@ -85,7 +85,7 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
   const auto* grp = m.incidence_group.data();
   const auto* slot = m.incidence_slot.data();
   const auto& groups = m.groups;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn > 2048)
   for (std::size_t i = 0; i < nn; ++i) {
     double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0, mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
     for (std::int64_t j = start[i]; j < start[i + 1]; ++j) {
@@ -185,6 +185,8 @@ void choose_time_step(Model& m, CycleState& c) {
       }
     for (auto& i : m.interactions) dt = std::min(dt, i->critical_step());
     c.step.dt_next = rc.dt_scale * dt;
+    // No element limits the step (e.g. the only element inverted): keep the last one.
+    if (!std::isfinite(c.step.dt_next) && c.step.dt_prev > 0.0) c.step.dt_next = c.step.dt_prev;
   }
   c.dt_mid = 0.5 * (c.step.dt_prev + c.step.dt_next);
   c.times.time_step += seconds_since(t0);
@@ -196,7 +198,7 @@ void update_velocities(Model& m, CycleState& c) {
   NodalState& n = m.nodes;
   const double dt = c.dt_mid;
   const std::size_t nn = n.n_nodes;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn > 2048)
   for (std::size_t i = 0; i < nn; ++i) {
     if (n.is_secondary[i] || !(n.mass[i] > 0.0)) continue;
     const double inv_m = 1.0 / n.mass[i];
@@ -246,24 +248,32 @@ void account_energies(Model& m, CycleState& c) {
   }
   for (const auto& k : m.constraints) wext += k->reaction_work();
   E.external_work = wext;
-  // Kinetic energy at t^n: mean of the half-step values 0.5 m |v^{n-1/2}|^2 and
-  // 0.5 m |v^{n+1/2}|^2 (after constraints). Rigid-body secondaries are carried by
-  // their main node and not counted.
-  const auto [ke, ker] = half_step_kinetic(m.nodes, c.chunk_scratch);
-  if (c.kinetic_half_prev < 0.0) {
+  // Kinetic energy at t^n consistent with the trapezoidal work of the forces
+  // (0.5 (f^{n-1} + f^n) . v^{n-1/2} dt summed over the steps telescopes to it):
+  //   E_kin(t^n) = 0.5 m |v^{n-1/2}|^2 + 0.5 dt^n m a^n . v^{n-1/2},
+  // with a^n the acceleration after constraints and v^{n-1/2} = v^{n+1/2} - dt^n a^n.
+  // Rotational: mean of the half-step values. Rigid-body secondaries are carried by their
+  // main node and not counted.
+  {
+    const NodalState& nd = m.nodes;
+    const double dt = c.dt_mid;
+    const double corr = node_sum(nd.n_nodes, c.chunk_scratch, [&](std::size_t i) {
+      if (nd.is_secondary[i]) return 0.0;
+      const double ax = nd.a.x[i], ay = nd.a.y[i], az = nd.a.z[i];
+      return 0.5 * dt * nd.mass[i] *
+             (ax * (nd.v.x[i] - dt * ax) + ay * (nd.v.y[i] - dt * ay) + az * (nd.v.z[i] - dt * az));
+    });
+    const auto [ke, ker] = half_step_kinetic(nd, c.chunk_scratch);
+    E.kinetic = c.kinetic_half_prev + corr;
+    E.rotational = 0.5 * (c.rotational_half_prev + ker);
     c.kinetic_half_prev = ke;
     c.rotational_half_prev = ker;
   }
-  E.kinetic = 0.5 * (c.kinetic_half_prev + ke);
-  E.rotational = 0.5 * (c.rotational_half_prev + ker);
-  c.kinetic_half_prev = ke;
-  c.rotational_half_prev = ker;
   const NodalState& n = m.nodes;
   double added = 0.0;
   for (std::size_t i = 0; i < n.n_nodes; ++i)
     if (!n.is_secondary[i]) added += n.added_mass[i];
   E.added_mass = added;
-  if (c.step.cycle == 0) E.initial_total = E.kinetic + E.rotational + E.internal;
 }
 
 // x^{n+1} = x^n + dt^{n+1/2} v^{n+1/2};  t^{n+1} = t^n + dt^{n+1/2}.
@@ -272,7 +282,7 @@ void update_positions(Model& m, CycleState& c) {
   NodalState& n = m.nodes;
   const double dt = c.step.dt_next;
   const std::size_t nn = n.n_nodes;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nn > 2048)
   for (std::size_t i = 0; i < nn; ++i) {
     n.x.x[i] += dt * n.v.x[i];
     n.x.y[i] += dt * n.v.y[i];

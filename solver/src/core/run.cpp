@@ -133,6 +133,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
     const auto [ke, ker] = half_step_kinetic(model.nodes, c.chunk_scratch);
     c.kinetic_half_prev = ke;
     c.rotational_half_prev = ker;
+    c.energies.initial_total = ke + ker;  // E_0: initial velocities v^{-1/2} = v_0
   }
   double next_th = 0.0, next_anim = rc.anim_start;
   const double tol = 1e-9 * rc.t_stop;

@@ -47,24 +47,33 @@ void FixedDofs::impose_velocities(const StepContext&, NodalState& n) {
 
 void ImposedVelocity::impose_velocities(const StepContext& step, NodalState& n) {
   const double t = step.time + 0.5 * step.dt_next;  // t^{n+1/2}
-  if (t < t_start || (t_stop > 0.0 && t > t_stop)) return;
+  if (t < t_start || (t_stop > 0.0 && t > t_stop)) {
+    work_ = work_done_;
+    return;
+  }
   const double value = fscale * (*function)(t / ascale);
-  const double dt_mid = 0.5 * (step.dt_prev + step.dt_next);
+  const double dt = 0.5 * (step.dt_prev + step.dt_next);
+  double half = 0.0, full = 0.0;
   for (Index node : nodes) {
     const auto i = static_cast<std::size_t>(node);
     if (dof < 3) {
       double& v = component(n.v, dof, i);
-      const double a = component(n.a, dof, i);
-      const double v_old = v - dt_mid * a;  // v^{n-1/2}
-      work_ += n.mass[i] * (value - v) * 0.5 * (v_old + value);
-      component(n.a, dof, i) = dt_mid > 0 ? (value - v_old) / dt_mid : 0.0;
+      double& a = component(n.a, dof, i);
+      const double v_old = v - dt * a;       // v^{n-1/2}
+      const double impulse = n.mass[i] * (value - v);  // R^n dt^n
+      half += 0.5 * impulse * v_old;
+      full += impulse * 0.5 * (v_old + value);
+      a = dt > 0 ? (value - v_old) / dt : 0.0;
       v = value;
     } else if (n.has_rotation[i]) {
       double& w = component(n.omega, dof - 3, i);
-      work_ += n.inertia[i] * (value - w) * 0.5 * (w + value);
+      const double impulse = n.inertia[i] * (value - w);
+      full += impulse * 0.5 * (w + value);
       w = value;
     }
   }
+  work_ = work_done_ + half;
+  work_done_ += full;
 }
 
 void Gravity::add_forces(const StepContext& step, NodalState& n) {

@@ -44,7 +44,8 @@ class ImposedVelocity final : public Constraint {
   double reaction_work() const override { return work_; }
 
  private:
-  double work_ = 0.0;
+  double work_done_ = 0.0;  // through t^{n-1/2} ... completed steps
+  double work_ = 0.0;       // reported through t^n
 };
 
 class Gravity final : public Interaction {

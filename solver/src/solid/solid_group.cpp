@@ -69,8 +69,9 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     for (auto& a : hist) a.assign(n, 0.0);
   eps_p.assign(material.plastic() ? n : 0, 0.0);
   e_int.assign(n, 0.0);
-  if (nodes_per_element == 8 && hourglass != HourglassForm::Viscous)
+  if (nodes_per_element == 8)
     for (auto& a : hg) a.assign(n, 0.0);
+  q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
   allocate_slots(false);
   Index bad = kNoIndex;
@@ -203,11 +204,14 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
       q = rho * l * (qa * qa * l * dv * dv - qb * c * dv);
       qv = qb * c + qa * qa * l * (-dv);
     }
-    // Internal energy: trapezoidal stress power (sigma - q I):D V dt.
+    // Internal energy: trapezoidal stress power 0.5 ((s - q I)^{n-1} + (s - q I)^n):D V dt
+    // (all energies use this trapezoidal form so that they telescope with the kinetic
+    // energy of the central difference scheme, see account_energies).
     auto power = [&](const double* s) {
       return s[0] * d[0] + s[1] * d[1] + s[2] * d[2] + 2.0 * (s[3] * d[3] + s[4] * d[4] + s[5] * d[5]);
     };
-    const double de = (0.5 * (power(s_old) + power(s_new)) - q * dv) * V * dt;
+    const double de = (0.5 * (power(s_old) + power(s_new)) - 0.5 * (q_bulk[e] + q) * dv) * V * dt;
+    q_bulk[e] = q;
     e_int[e] += de;
     e_int_inc += de;
     // Internal forces: f_iI = -(sigma_ij - q delta_ij) b_jI  (b = V B).
@@ -243,7 +247,8 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
         double p = 0.0;
         for (int a = 0; a < 4; ++a) {
           Qx[a] = cv * qx[a]; Qy[a] = cv * qy[a]; Qz[a] = cv * qz[a];
-          p += Qx[a] * qx[a] + Qy[a] * qy[a] + Qz[a] * qz[a];
+          p += 0.5 * ((hg[a][e] + Qx[a]) * qx[a] + (hg[4 + a][e] + Qy[a]) * qy[a] + (hg[8 + a][e] + Qz[a]) * qz[a]);
+          hg[a][e] = Qx[a]; hg[4 + a][e] = Qy[a]; hg[8 + a][e] = Qz[a];
         }
         e_hg_inc += p * dt;
       } else if (hourglass == HourglassForm::Stiffness) {
@@ -303,8 +308,22 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
           fz[i] -= Qz[a] * gam[a][i];
         }
     }
-    // Critical step with bulk viscosity: dt = l / (Q + sqrt(Q^2 + c^2)).
-    const double dte = l / (qv + std::sqrt(qv * qv + c * c));
+    // Critical step: highest element frequency estimated by the Rayleigh quotient of the
+    // dilatational mode u_I = B_I (exact for a box): with T = sum_I B_I (x) B_I,
+    // omega^2 = n (lambda tr(T)^2 + 2 G T:T) / (rho tr(T)); dt = 2 / omega, i.e. an
+    // effective length l_eff = 2 c / omega, reduced by bulk viscosity:
+    // dt = l_eff / (Q + sqrt(Q^2 + c^2)).
+    double txx = 0, tyy = 0, tzz = 0, txy = 0, tyz = 0, tzx = 0;
+    for (int i = 0; i < NPE; ++i) {
+      txx += bx[i] * bx[i]; tyy += by[i] * by[i]; tzz += bz[i] * bz[i];
+      txy += bx[i] * by[i]; tyz += by[i] * bz[i]; tzx += bz[i] * bx[i];
+    }
+    const double iv2 = inv_v * inv_v;
+    const double trT = (txx + tyy + tzz) * iv2;
+    const double TT = (txx * txx + tyy * tyy + tzz * tzz + 2.0 * (txy * txy + tyz * tyz + tzx * tzx)) * iv2 * iv2;
+    const double omega2 = NPE * (mat.lambda * trT * trT + 2.0 * mat.G * TT) / (rho * trT);
+    const double l_eff = 2.0 * c / std::sqrt(omega2);
+    const double dte = l_eff / (qv + std::sqrt(qv * qv + c * c));
     if (dte < dt_min) {
       dt_min = dte;
       dt_elem = static_cast<Index>(e);
@@ -326,7 +345,7 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   std::vector<double> e_int_c(nch, 0.0), e_hg_c(nch, 0.0),
       dt_c(nch, std::numeric_limits<double>::infinity());
   std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nch > 1)
   for (std::size_t ch = 0; ch < nch; ++ch) {
     if (nodes_per_element == 8)
       compute_chunk<8>(ch, step, nodes, e_int_c[ch], e_hg_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);

@@ -41,6 +41,7 @@ class SolidGroup final : public ElementGroup {
   std::vector<double> eps_p;               // plastic strain (LAW2/36)
   std::vector<double> e_int;               // internal energy of the element [energy]
   std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]
+  std::vector<double> q_bulk;              // bulk viscosity pressure of the last cycle [stress]
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
   // compute V0 and mass from the current nodal positions. Returns the local index of

@@ -33,5 +33,8 @@ RunResult run_model(Model& model, const RunOptions& options);
 // Read NAME_0000.rad and the engine deck NAME_0001.rad beside it, build, run.
 // Deck errors go to `err` (exit code 1).
 RunResult run_deck(const std::filesystem::path& starter, const RunOptions& options, std::ostream& err);
+// Same, building into `model` (kept for inspection by tests). `model` must be empty.
+RunResult run_deck(const std::filesystem::path& starter, const RunOptions& options, std::ostream& err,
+                   Model& model);
 
 }  // namespace hbm::solver
