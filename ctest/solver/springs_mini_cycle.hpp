@@ -26,6 +26,7 @@ struct MiniCycle {
   double dt_prev = 0;
   double kinetic = 0;      // at t^n (mean of half-step velocities), translation + rotation
   double momentum[3] = {0, 0, 0};  // sum m v^{n+1/2} over non-secondary nodes
+  double half_prev = -1;           // half-step kinetic energy of the previous cycle
 
   void init_nodes(std::size_t n) {
     nodes.resize(n);
@@ -39,8 +40,6 @@ struct MiniCycle {
   void step() {
     const std::size_t n = nodes.n_nodes;
     StepContext sc{cycle, time, dt_prev, dt};
-    std::vector<double> v_old_x = nodes.v.x, v_old_y = nodes.v.y, v_old_z = nodes.v.z;
-    std::vector<double> w_old_x = nodes.omega.x, w_old_y = nodes.omega.y, w_old_z = nodes.omega.z;
     for (std::size_t i = 0; i < n; ++i) {
       nodes.force.x[i] = nodes.force.y[i] = nodes.force.z[i] = 0;
       nodes.moment.x[i] = nodes.moment.y[i] = nodes.moment.z[i] = 0;
@@ -78,24 +77,24 @@ struct MiniCycle {
     }
     for (Constraint* c : constraints) c->impose_velocities(sc, nodes);
     for (Constraint* c : constraints) c->impose_dependent(sc, nodes);
-    kinetic = 0;
+    // Kinetic energy at t^n as the core accounts it (docs/cycle.md step 8): the mean of
+    // the half-step energies 0.5 m |v^{n-1/2}|^2 and 0.5 m |v^{n+1/2}|^2 (+ rotation).
+    double half = 0;
     momentum[0] = momentum[1] = momentum[2] = 0;
     for (std::size_t i = 0; i < n; ++i) {
       if (nodes.is_secondary[i]) continue;
-      const double vx = 0.5 * (v_old_x[i] + nodes.v.x[i]);
-      const double vy = 0.5 * (v_old_y[i] + nodes.v.y[i]);
-      const double vz = 0.5 * (v_old_z[i] + nodes.v.z[i]);
-      kinetic += 0.5 * nodes.mass[i] * (vx * vx + vy * vy + vz * vz);
+      const double vx = nodes.v.x[i], vy = nodes.v.y[i], vz = nodes.v.z[i];
+      half += 0.5 * nodes.mass[i] * (vx * vx + vy * vy + vz * vz);
       if (nodes.has_rotation[i]) {
-        const double wx = 0.5 * (w_old_x[i] + nodes.omega.x[i]);
-        const double wy = 0.5 * (w_old_y[i] + nodes.omega.y[i]);
-        const double wz = 0.5 * (w_old_z[i] + nodes.omega.z[i]);
-        kinetic += 0.5 * nodes.inertia[i] * (wx * wx + wy * wy + wz * wz);
+        const double wx = nodes.omega.x[i], wy = nodes.omega.y[i], wz = nodes.omega.z[i];
+        half += 0.5 * nodes.inertia[i] * (wx * wx + wy * wy + wz * wz);
       }
-      momentum[0] += nodes.mass[i] * nodes.v.x[i];
-      momentum[1] += nodes.mass[i] * nodes.v.y[i];
-      momentum[2] += nodes.mass[i] * nodes.v.z[i];
+      momentum[0] += nodes.mass[i] * vx;
+      momentum[1] += nodes.mass[i] * vy;
+      momentum[2] += nodes.mass[i] * vz;
     }
+    kinetic = 0.5 * ((half_prev < 0 ? half : half_prev) + half);
+    half_prev = half;
     for (std::size_t i = 0; i < n; ++i) {
       nodes.x.x[i] += dt * nodes.v.x[i];
       nodes.x.y[i] += dt * nodes.v.y[i];

@@ -82,6 +82,9 @@ void build_rigid_bodies(BuildContext& ctx) {
       ctx.error(*c, e.what());
       continue;
     }
+    const RunControl& rc = ctx.model().control;
+    if (rc.nodal_cst && rc.dt_scale > 0)
+      body->rot_scaling_coef = 0.5 * (rc.dt_min / rc.dt_scale) * (rc.dt_min / rc.dt_scale);
     const Eigen::Vector3d x_after(nodes.x.x[main], nodes.x.y[main], nodes.x.z[main]);
     if ((x_after - x_before).norm() > 1e-9 * (1.0 + x_before.norm()))
       for (const auto& g : ctx.model().groups)

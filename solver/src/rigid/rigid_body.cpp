@@ -78,13 +78,6 @@ void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matr
   inv_inertia_used_ = principal.cwiseInverse();
 }
 
-Eigen::Vector3d RigidBody::inverse_inertia(const NodalState& nodes) const {
-  // Rotational mass scaling of the main node adds isotropic inertia to the tensor.
-  const auto m = static_cast<std::size_t>(main);
-  const double added = std::max(0.0, nodes.inertia[m] - nodes.inertia0[m]);
-  return (principal.array() + added).inverse().matrix();
-}
-
 void RigidBody::initialise(const NodalState& nodes, NodalState& out) {
   // Momentum and angular momentum of the initial nodal velocities (/INIVEL) about the
   // centre: the body starts with the rigid motion that carries them.
@@ -145,13 +138,23 @@ void RigidBody::gather_forces(const StepContext& step, NodalState& nodes) {
 }
 
 void RigidBody::impose_velocities(const StepContext& step, NodalState& nodes) {
+  const auto mi = static_cast<std::size_t>(main);
   const double dt_n = 0.5 * (step.dt_prev + step.dt_next);
   L += dt_n * load(nodes.moment, main);  // kick with the torque at t^n
-  inv_inertia_used_ = inverse_inertia(nodes);
-  mass_used_ = nodes.mass[static_cast<std::size_t>(main)];
+  // Rotational mass scaling on the smallest principal moment (the core's check on the
+  // scalar inertia is then never stricter).
+  const double need = rot_scaling_coef * nodes.rot_stiffness[mi];
+  if (need > principal.minCoeff() + added_inertia) added_inertia = need - principal.minCoeff();
+  inv_inertia_used_ = inverse_inertia();
+  mass_used_ = nodes.mass[mi];
   Q_next_ = free_rotation_step(Q, L, inv_inertia_used_, step.dt_next);  // exact free flow
   omega_written_ = rotation_vector(Q_next_ * Q.transpose()) / step.dt_next;
   store(nodes.omega, main, omega_written_);
+  // Scalar inertia seen by the core: Rayleigh quotient of the tensor for this omega.
+  const double w2 = omega_written_.squaredNorm();
+  const Eigen::Vector3d wb = Q.transpose() * omega_written_;
+  nodes.inertia[mi] = w2 > 0 ? wb.dot(inv_inertia_used_.cwiseInverse().cwiseProduct(wb)) / w2
+                             : principal.minCoeff() + added_inertia;
 }
 
 void RigidBody::impose_dependent(const StepContext& step, NodalState& nodes) {

@@ -10,6 +10,10 @@
 //      global) advanced over dt^{n+1/2} by the symplectic free-rigid-body splitting of
 //      Dullweber, Leimkuhler & McLachlan (1997), see rigid_rotation.hpp; the main node
 //      omega is set to the rotation vector of Q^{n+1} Q^{n,T} / dt^{n+1/2}.
+//      The main node's scalar `inertia` is set to the Rayleigh quotient
+//      omega . J omega / |omega|^2, so that the core's nodal rotational energy
+//      0.5 inertia |omega|^2 is the body's 0.5 omega . J omega; rotational mass scaling
+//      of the body is done here on the smallest principal moment.
 //   3. impose_dependent: each secondary gets v_s = (x_m^{n+1} + Q^{n+1} r_s - x_s^n) / dt,
 //      so that the core's position update puts it exactly on the rigid configuration
 //      (v_s = v_m + omega x r to first order, without the O(dt^2) radial growth of that
@@ -44,6 +48,10 @@ class RigidBody final : public Constraint {
   Eigen::Vector3d principal = Eigen::Vector3d::Ones();  // principal moments [mass*length^2]
   Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();      // principal frame -> global, at t^n
   Eigen::Vector3d L = Eigen::Vector3d::Zero();          // spatial angular momentum (half step)
+  // /DT/NODA/CST rotational scaling: inertia needed per unit rotational stiffness,
+  // 0.5 (Tmin / Tsca)^2 (0 without /DT/NODA/CST). Added isotropically to the tensor.
+  double rot_scaling_coef = 0;
+  double added_inertia = 0;  // cumulative, never decreases [mass*length^2]
 
   // Build the body from the current nodal masses / positions (main node moved to the
   // centre, its mass0 and inertia0 set, secondaries flagged). Throws
@@ -68,7 +76,7 @@ class RigidBody final : public Constraint {
   Eigen::Vector3d velocity() const { return velocity_; }
   Eigen::Vector3d omega() const { return omega_; }
   double kinetic_energy() const;
-  Eigen::Vector3d inverse_inertia(const NodalState& nodes) const;
+  Eigen::Vector3d inverse_inertia() const { return (principal.array() + added_inertia).inverse().matrix(); }
 
  private:
   void initialise(const NodalState& nodes, NodalState& out);
