@@ -87,24 +87,30 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
     fval = q - sy;
     dfval = dq - hh * 2.0 / 3.0 * (q + g * dq);
   };
-  // First guess from the 3D radial return: deps_p = f / (3G + H).
-  double g = (q_tr - sy0) / (3.0 * G + std::max(h, 0.0)) * 1.5 / q_tr;
+  // First guess from the 3D radial return: deps_p = f / (3G + H), with the von Mises
+  // stress at the end of the step (q = sigma_y(eps_p + deps_p)) in g = 3/2 deps_p / q.
+  const double dep0 = (q_tr - sy0) / (3.0 * G + std::max(h, 0.0));
+  double g = 1.5 * dep0 / std::max(sy0 + std::max(h, 0.0) * dep0, q_tr - 3.0 * G * dep0);
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
-  double q = q_tr, dq, f, df;
-  const double tol = 1e-12 * sy0;
+  double q, dq, f, df;
+  // Newton, safeguarded by bisection once the root is bracketed. When |f| is below
+  // 1e-6 sigma_y the last Newton step is taken without re-evaluating: the quadratic
+  // convergence leaves an error of order 1e-12 sigma_y.
   for (int it = 0; it < 60; ++it) {
     eval(g, q, dq, f, df);
-    if (std::abs(f) <= tol) break;
     if (f > 0) lo = g; else hi = g;
     double gn = (df < 0) ? g - f / df : -1.0;
-    if (!(gn > lo && gn < hi)) gn = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * g + 1e-300;
+    const bool in_bracket = gn > lo && gn < hi;
+    if (!in_bracket) gn = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * g + 1e-300;
     g = gn;
+    if (in_bracket && std::abs(f) <= 1e-6 * sy0) break;
   }
   const double a1 = 1.0 / (1.0 + c1 * g), a2 = 1.0 / (1.0 + c2 * g);
   const double S = St * a1, D = Dt * a2;
   s.sxx = 0.5 * (S + D);
   s.syy = 0.5 * (S - D);
   s.sxy = Tt * a2;
+  q = std::sqrt(0.25 * S * S + 0.75 * D * D + 3.0 * s.sxy * s.sxy);
   r.depsp = 2.0 / 3.0 * g * q;
   epsp += r.depsp;
   // Elastic thickness strain plus plastic incompressibility: deps_p_zz = -g S / 3.

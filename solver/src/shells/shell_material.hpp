@@ -20,6 +20,7 @@
 
 #include "hbm/solver/material/hardening.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string_view>
@@ -49,8 +50,24 @@ struct ShellMaterial {
   // Equivalent plastic strain at failure (infinity: none).
   double eps_p_max() const { return plastic() ? plasticity.eps_p_max : std::numeric_limits<double>::infinity(); }
   // Yield stress and hardening slope d sigma_y / d eps_p at plastic strain eps_p,
-  // for an equivalent total strain rate epsdot.
+  // for an equivalent total strain rate epsdot. Johnson-Cook is evaluated here with one
+  // power per call (the same formula as JohnsonCookHardening, which calls pow twice);
+  // tabulated curves go through the engine's TabulatedHardening.
   double yield(double eps_p, double epsdot, double& slope) const {
+    if (plasticity.kind == PlasticityLaw::Kind::JohnsonCook) {
+      const auto& jc = plasticity.jc;
+      const double ep = eps_p > 1e-12 ? eps_p : 1e-12;
+      const double pw = jc.n == 1.0 ? ep : (jc.n == 0.5 ? std::sqrt(ep) : std::pow(ep, jc.n));
+      double f = 1.0;
+      if (jc.c > 0.0 && epsdot > jc.eps_dot0) f = 1.0 + jc.c * std::log(epsdot / jc.eps_dot0);
+      const double sy = (jc.a + (eps_p > 0.0 ? jc.b * pw : 0.0)) * f;
+      if (sy >= jc.sig_max) {
+        slope = 0.0;
+        return jc.sig_max;
+      }
+      slope = jc.b * jc.n * pw / ep * f;
+      return sy;
+    }
     slope = plasticity.slope(eps_p, epsdot);
     return plasticity.yield_stress(eps_p, epsdot);
   }
