@@ -15,8 +15,9 @@ using namespace hbm::solver::contact;
 using namespace hbm::solver::contact::testing;
 
 namespace {
-// Cycle with a constraint: forces, v += dt f/m, impose, x += dt v.
+// Cycle with a constraint: stage 1, v += dt f/m, stage 2 (impose), x += dt v.
 void cycle(NodalState& n, RigidWallPlane& w, double dt, double gz, StepContext& st) {
+  w.gather_forces(st, n);
   for (std::size_t i = 0; i < n.n_nodes; ++i) {
     n.v.z[i] += dt * gz;
   }

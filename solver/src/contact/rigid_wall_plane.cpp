@@ -19,6 +19,12 @@ RigidWallPlane::RigidWallPlane(RigidWallPlaneParams p, std::vector<Index> second
   tied_.assign(secondary_.size(), 0);
   r_.assign(secondary_.size(), 0.0);
   hit_.assign(secondary_.size(), 0);
+  v_prev_.assign(secondary_.size(), V3{});
+}
+
+void RigidWallPlane::gather_forces(const StepContext&, NodalState& nodes) {
+  for (std::size_t k = 0; k < secondary_.size(); ++k) v_prev_[k] = get(nodes.v, static_cast<std::size_t>(secondary_[k]));
+  if (p_.wall_node != kNoIndex) wall_v_prev_ = get(nodes.v, static_cast<std::size_t>(p_.wall_node));
 }
 
 void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& nodes) {
@@ -73,14 +79,18 @@ void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& node
     put(nodes.v, i, v);
     impulse_n += (m * dot(dv, n)) * n;
     impulse_t += m * (dv - dot(dv, n) * n);
-    work += m * dot(dv, 0.5 * (v_old + v));  // (m dv/dt) . v_mid dt
+    // Reaction m dv/dt working on the mid-step velocity (v^{n-1/2} + v^{n+1/2})/2: with
+    // the engine's half-step kinetic energy the balance is then exact (a node resting on
+    // the wall, v^{n-1/2} = v^{n+1/2} = 0, takes reactions that do no work).
+    work += m * dot(dv, 0.5 * (v_prev_[k] + v));
   }
   if (moving) {
     // Tangential impulses go back to the wall node (normal part solved above).
     wall_dv -= (1.0 / wall_m) * impulse_t;
     const V3 vw_old = wall_v0, vw = wall_v0 + wall_dv;
     put(nodes.v, w, vw);
-    work += wall_m * dot(wall_dv, 0.5 * (vw_old + vw));
+    work += wall_m * dot(wall_dv, 0.5 * (wall_v_prev_ + vw));
+    (void)vw_old;
   }
   reaction_work_ += work;
   // Force of the model on the wall = -(impulse given to the nodes) / dt^n.

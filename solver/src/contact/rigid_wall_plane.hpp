@@ -43,6 +43,9 @@ class RigidWallPlane : public Constraint {
 
   std::string_view kind() const override { return "/RWALL/PLANE"; }
   std::int64_t user_id() const override { return p_.id; }
+  // Stage 1: remembers v^{n-1/2} of the secondary nodes (and wall node) for the
+  // reaction work; stage 2: the wall condition on v^{n+1/2}.
+  void gather_forces(const StepContext& step, NodalState& nodes) override;
   void impose_velocities(const StepContext& step, NodalState& nodes) override;
   double reaction_work() const override { return reaction_work_; }
 
@@ -63,6 +66,8 @@ class RigidWallPlane : public Constraint {
   std::vector<std::uint8_t> tied_;  // Slide 1: node stuck to the wall
   std::vector<double> r_;           // scratch: target relative normal velocity
   std::vector<std::uint8_t> hit_;   // scratch: node in contact this cycle
+  std::vector<V3> v_prev_;          // v^{n-1/2} of each secondary node
+  V3 wall_v_prev_;
   V3 fn_, ft_;
   double reaction_work_ = 0;
 };
