@@ -38,7 +38,7 @@ Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& w) {
 
 }  // namespace
 
-void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& added_inertia,
+void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& given_inertia,
                          bool include_main_in_centre, bool spherical) {
   std::vector<PointMass> points;
   points.reserve(secondary.size() + 1);
@@ -48,7 +48,7 @@ void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matr
   }
   const auto m = static_cast<std::size_t>(main);
   double extra = added_mass;
-  Eigen::Matrix3d extra_j = added_inertia;
+  Eigen::Matrix3d extra_j = given_inertia;
   if (include_main_in_centre)
     points.push_back({nodes.mass0[m], load(nodes.x, main), nodes.inertia0[m]});
   else {
@@ -57,7 +57,9 @@ void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matr
   }
   MassProperties mp = compute_mass_properties(points, extra, extra_j);
   if (spherical) {
-    const double jm = mp.principal.sum() / 3.0;
+    // Ispher = 1: spherical inertia, Jxx on every axis when given, else the mean of the
+    // computed principal moments.
+    const double jm = given_inertia(0, 0) > 0 ? given_inertia(0, 0) : mp.principal.sum() / 3.0;
     mp.principal.setConstant(jm);
   }
   mass = mp.mass;

@@ -56,7 +56,7 @@ class RigidBody final : public Constraint {
   // Build the body from the current nodal masses / positions (main node moved to the
   // centre, its mass0 and inertia0 set, secondaries flagged). Throws
   // std::invalid_argument with the reason if the body is degenerate.
-  void assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& added_inertia,
+  void assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& given_inertia,
                 bool include_main_in_centre, bool spherical);
 
   std::string_view kind() const override { return "/RBODY"; }

@@ -5,9 +5,10 @@
 // its /FUNCT curves, adds half the spring mass (and inertia) to each node. Registered in
 // solver/src/build/builders.def.
 //
-// Card layouts (Radioss 2024): TYPE4 line 1 `Mass sens_id Isflag Ileng`, then one DOF
-// block; TYPE8 and TYPE13 line 1 `Mass Inertia skew_id sens_id Isflag Ifail Ileng
-// Ifail2`, then six DOF blocks (X, Y, Z, RX, RY, RZ), each three lines. Not supported
+// Card layouts (Radioss 2024, deck/src/keywords_model.cpp): TYPE4 line 1 `Mass sens_id
+// Isflag Ileng`, then one DOF block; TYPE13 line 1 `Mass Inertia skew_id sens_id Isflag
+// Ifail Ileng Ifail2` (TYPE8: `... Ifail Ifail2 Iequil`), then six DOF blocks (X, Y, Z,
+// RX, RY, RZ), each three lines, fields numbered per DOF (K1, fct_ID11, ...). Not supported
 // (deck error naming the field): sensors, skews, H = 3, 5, 6, per-length input on a
 // zero-length spring.
 #include "hbm/solver/build_context.hpp"
@@ -37,59 +38,73 @@ CurveView view_of(const FunctionCurve* f) {
 
 double default_one(double v) { return v == 0.0 ? 1.0 : v; }
 
+// Field names of one DOF block: TYPE4 uses K, C, ..., fct_id1 ...; TYPE8/13 number them
+// per DOF (K1..K6, fct_ID11..fct_ID16, ...) as in the Radioss reference guide.
+struct DofNames {
+  std::string K, C, A, B, D, f1, H, f2, f3, f4, dmin, dmax, F, E, Ascale, Hscale;
+};
+DofNames dof_names(bool axial, std::size_t d) {
+  if (axial)
+    return {"K", "C", "A", "B", "D", "fct_id1", "H", "fct_id2", "fct_id3", "fct_id4",
+            "dmin", "dmax", "F", "E", "Ascale", "Hscale"};
+  const std::string i = std::to_string(d + 1);
+  return {"K" + i, "C" + i, "A" + i, "B" + i, "D" + i, "fct_ID1" + i, "H" + i, "fct_ID2" + i,
+          "fct_ID3" + i, "fct_ID4" + i, "dmin" + i, "dmax" + i, "F" + i, "E" + i,
+          "Ascale" + i, "Hscale" + i};
+}
+
 // One DOF block starting at fixed line `k` (K line), `k+1` (functions), `k+2` (scales).
-bool read_dof(BuildContext& ctx, const hbm::deck::Card& c, std::size_t k, SpringDofLaw& law,
-              bool rotational) {
+bool read_dof(BuildContext& ctx, const hbm::deck::Card& c, std::size_t k, const DofNames& n,
+              SpringDofLaw& law) {
   bool ok = true;
-  law.K = c.real(k, "K");
-  law.C = c.real(k, "C");
-  law.A = default_one(c.real(k, "A"));
-  law.B = c.real(k, "B");
-  law.D = default_one(c.real(k, "D"));
-  const int h = static_cast<int>(c.integer(k + 1, "H"));
-  law.delta_min = c.real(k + 1, "dmin");
-  law.delta_max = c.real(k + 1, "dmax");
-  law.Fv = default_one(c.real(k + 2, "F"));
-  law.E = c.real(k + 2, "E");
-  law.Ascale = default_one(c.real(k + 2, "Ascale"));
-  law.Hscale = default_one(c.real(k + 2, "Hscale"));
+  law.K = c.real(k, n.K);
+  law.C = c.real(k, n.C);
+  law.A = default_one(c.real(k, n.A));
+  law.B = c.real(k, n.B);
+  law.D = default_one(c.real(k, n.D));
+  const int h = static_cast<int>(c.integer(k + 1, n.H));
+  law.delta_min = c.real(k + 1, n.dmin);
+  law.delta_max = c.real(k + 1, n.dmax);
+  law.Fv = default_one(c.real(k + 2, n.F));
+  law.E = c.real(k + 2, n.E);
+  law.Ascale = default_one(c.real(k + 2, n.Ascale));
+  law.Hscale = default_one(c.real(k + 2, n.Hscale));
   const bool has_line = c.lines.size() > k + 1;
   const hbm::deck::Row& fl = line_or_last(c, k + 1);
-  auto fn = [&](std::string_view field) -> CurveView {
+  auto fn = [&](const std::string& field) -> CurveView {
     if (!has_line || c.integer(fl, field) == 0) return {};
     const FunctionCurve* f = ctx.require_function(c, fl, field, true);
     if (!f) ok = false;
     return view_of(f);
   };
-  law.f1 = fn("fct_id1");
-  law.g2 = fn("fct_id2");
-  law.f3 = fn("fct_id3");
-  law.h4 = fn("fct_id4");
+  law.f1 = fn(n.f1);
+  law.g2 = fn(n.f2);
+  law.f3 = fn(n.f3);
+  law.h4 = fn(n.f4);
   if (!springs::is_supported_hardening(h)) {
-    ctx.error(c, fl, "H", "hardening flag H = " + std::to_string(h) +
+    ctx.error(c, fl, n.H, "hardening flag H = " + std::to_string(h) +
                               " is not supported (0, 1, 2, 4, 7, 8 are)");
     return false;
   }
   law.H = static_cast<springs::Hardening>(h);
   if (h != 0 && law.f1.empty()) {
-    ctx.error(c, fl, "fct_id1", "H = " + std::to_string(h) + " needs a loading function fct_id1");
+    ctx.error(c, fl, n.f1, "H = " + std::to_string(h) + " needs a loading function fct_id1");
     ok = false;
   }
   if ((h == 4 || h == 7) && law.f3.empty()) {
-    ctx.error(c, fl, "fct_id3", "H = " + std::to_string(h) + " needs the " +
+    ctx.error(c, fl, n.f3, "H = " + std::to_string(h) + " needs the " +
                                     (h == 4 ? "lower yield" : "unloading") + " function fct_id3");
     ok = false;
   }
   if ((h == 1 || h == 2 || h == 4 || h == 7) && !(law.K > 0)) {
-    ctx.error(c, line_or_last(c, k), "K", "H = " + std::to_string(h) +
+    ctx.error(c, line_or_last(c, k), n.K, "H = " + std::to_string(h) +
                                               " needs the unloading stiffness K > 0");
     ok = false;
   }
   if (law.B != 0 && !(law.D > 0)) {
-    ctx.error(c, line_or_last(c, k), "D", "the logarithmic rate term needs D > 0");
+    ctx.error(c, line_or_last(c, k), n.D, "the logarithmic rate term needs D > 0");
     ok = false;
   }
-  (void)rotational;
   return ok;
 }
 
@@ -105,10 +120,11 @@ bool read_property(BuildContext& ctx, const hbm::deck::Card& c, SpringProperty& 
     ctx.error(c, c.lines.at(0), "sens_id", "spring activation by sensor is not supported (use 0)");
     ok = false;
   }
-  p.per_length = c.integer(0, "Ileng") == 1;
+  // TYPE8 has no Ileng field (its line 1 ends with Ifail2, Iequil).
+  p.per_length = p.type != SpringType::General && c.integer(0, "Ileng") == 1;
   if (p.type == SpringType::Axial) {
     p.dofs.resize(1);
-    ok = read_dof(ctx, c, 1, p.dofs[0], false) && ok;
+    ok = read_dof(ctx, c, 1, dof_names(true, 0), p.dofs[0]) && ok;
   } else {
     p.inertia = c.real(0, "Inertia");
     if (c.integer(0, "skew_id") != 0) {
@@ -116,7 +132,7 @@ bool read_property(BuildContext& ctx, const hbm::deck::Card& c, SpringProperty& 
       ok = false;
     }
     p.dofs.resize(6);
-    for (std::size_t d = 0; d < 6; ++d) ok = read_dof(ctx, c, 1 + 3 * d, p.dofs[d], d >= 3) && ok;
+    for (std::size_t d = 0; d < 6; ++d) ok = read_dof(ctx, c, 1 + 3 * d, dof_names(false, d), p.dofs[d]) && ok;
     const bool rot = p.type == SpringType::Beam || springs::has_rotational_law(p);
     if (rot && !(p.inertia > 0)) {
       ctx.error(c, c.lines.at(0), "Inertia",
