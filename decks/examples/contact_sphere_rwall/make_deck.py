@@ -11,7 +11,7 @@ import radioss_deck as rd  # noqa: E402
 
 NAME = "contact_sphere_rwall"
 R, RHO, E, NU, V0 = 10.0, 1.0e-6, 0.01, 0.3, 1.0   # mm, kg/mm^3, GPa, -, mm/ms
-N, M = 12, 6                                       # cube divisions, layers of the outer shell
+N, M = 16, 8                                       # cube divisions, layers of the outer shell
 # Hertz, elastic sphere on a rigid plane (Johnson, Contact Mechanics, 1985, §11.4):
 #   E* = E / (1 - nu^2), m = rho 4/3 pi R^3,
 #   delta_max = (15 m V0^2 / (16 E* sqrt(R)))^(2/5),  F_max = 4/3 E* sqrt(R) delta_max^(3/2),
