@@ -146,6 +146,11 @@ class Checker {
 
   void build_indexes() {
     // Nodes.
+    std::size_t n_nodes = 0;
+    for (const Card& c : deck_.cards)
+      if (c.spec->keyword == "/NODE") n_nodes += c.n_rows();
+    xyz_.reserve(n_nodes);
+    node_rows_.reserve(n_nodes);
     for (std::size_t ci = 0; ci < deck_.cards.size(); ++ci) {
       const Card& c = deck_.cards[ci];
       if (c.spec->keyword != "/NODE") continue;

@@ -41,7 +41,17 @@ class Parser {
   Parser(Deck& deck, DiagSink& sink) : deck_(deck), sink_(sink) {}
 
   void run(const std::vector<SourceLine>& lines) {
-    for (const SourceLine& l : lines) {
+    // Data lines following each keyword line, to size the card's arrays once.
+    following_.assign(lines.size(), 0);
+    std::uint32_t run_length = 0;
+    for (std::size_t i = lines.size(); i-- > 0;) {
+      following_[i] = run_length;
+      const std::string_view t = lines[i].text;
+      run_length = (!t.empty() && t[0] == '/') ? 0 : run_length + 1;
+    }
+    for (std::size_t li = 0; li < lines.size(); ++li) {
+      const SourceLine& l = lines[li];
+      line_index_ = li;
       if (sink_.full()) return;
       if (after_end_) {
         if (!is_blank(l.text) && !warned_after_end_) {
@@ -64,6 +74,9 @@ class Parser {
   Deck& deck_;
   DiagSink& sink_;
   bool starter() const { return deck_.section == Section::Starter; }
+
+  std::vector<std::uint32_t> following_;  // per keyword line: data lines until the next keyword
+  std::size_t line_index_ = 0;
 
   // Current card state.
   Card* cur_ = nullptr;
@@ -217,6 +230,11 @@ class Parser {
     }
     // Open the card.
     Card& c = deck_.cards.emplace_back();
+    if (spec->rows) {
+      const std::size_t n = following_[line_index_];
+      c.lines.reserve(spec->lines.size() + n);
+      c.values.reserve(n * spec->rows->fields.size() + 64);
+    }
     c.spec = spec;
     c.id = id;
     c.loc = l.loc;

@@ -4,6 +4,7 @@
 
 #include "text_fields.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -105,6 +106,7 @@ bool read_file(const std::filesystem::path& p, std::string& out) {
 }
 
 void load_sources(std::string_view text, Deck& deck, Sources& out, std::vector<Diagnostic>& diags) {
+  out.lines.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
   Loader l{deck, out, diags, {}};
   l.stack.push_back(identity(deck.files[0]));
   l.scan(text, 0, 0);
