@@ -151,6 +151,7 @@ class Checker {
       if (c.spec->keyword == "/NODE") n_nodes += c.n_rows();
     xyz_.reserve(n_nodes);
     node_rows_.reserve(n_nodes);
+    nodes_.reserve(n_nodes);
     for (std::size_t ci = 0; ci < deck_.cards.size(); ++ci) {
       const Card& c = deck_.cards[ci];
       if (c.spec->keyword != "/NODE") continue;
@@ -208,6 +209,13 @@ class Checker {
     // Element ids, unique per family.
     std::array<IdIndex, 4> elems;
     std::vector<const Row*> elem_rows;
+    {
+      std::array<std::size_t, 4> n{};
+      for (const Card& c : deck_.cards) n[static_cast<std::size_t>(family(c.spec->keyword))] += c.n_rows();
+      for (std::size_t f = 1; f < 4; ++f) elems[f].reserve(n[f]);
+      springs_.reserve(n[3]);
+      elem_rows.reserve(n[1] + n[2] + n[3]);
+    }
     for (const Card& c : deck_.cards) {
       const Family fam = family(c.spec->keyword);
       if (fam == Family::None) continue;

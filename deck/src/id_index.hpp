@@ -15,6 +15,7 @@ class IdIndex {
  public:
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
+  void reserve(std::size_t n) { entries_.reserve(n); }
   void add(std::int64_t id, std::uint32_t payload) { entries_.emplace_back(id, payload); }
 
   // Builds the lookup; calls dup(id, first_payload, second_payload) for every repeat.

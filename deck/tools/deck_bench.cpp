@@ -54,7 +54,7 @@ Generated generate(double scale) {
   std::string& s = g.text;
   const int bx = static_cast<int>(50 * scale), by = 50, bz = 100;       // brick cells
   const int px = static_cast<int>(420 * scale), py = 600;               // shell cells
-  s.reserve(static_cast<std::size_t>(1e6 * scale * 70));
+  s.reserve(static_cast<std::size_t>(1.1e6 * scale * 80));
   s += "#RADIOSS STARTER\n/BEGIN\nbench\n      2024         0\n"
        "                  kg                  mm                  ms\n"
        "                  kg                  mm                  ms\n";
