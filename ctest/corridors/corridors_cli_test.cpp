@@ -27,7 +27,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path work = HBM_TEST_WORK_DIR;
+// Each test works in its own folder (CTest may run them in parallel processes).
+fs::path work;
 
 int run(const std::string& cmd, std::string* output = nullptr) {
   const fs::path log = work / "last_command.log";
@@ -156,9 +157,10 @@ struct Closed {
 
 class CorridorsCli : public ::testing::Test {
 protected:
-  static void SetUpTestSuite() {
+  void SetUp() override {
+    work = fs::path(HBM_TEST_WORK_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(work);
     fs::create_directories(work);
-    fs::remove_all(work / "run");
     ASSERT_EQ(run(std::string("'") + HBM_SYNTHETIC_EXE + "' --out '" + (work / "run").string() +
                   "' --corridor-out '" + (work / "self_corridor.csv").string() + "'"),
               0);
