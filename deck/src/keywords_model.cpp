@@ -48,23 +48,25 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         int_field("Ismstr", 10, 0, 11, 0, "small strain flag"),
         int_field("Ish3n", 20, 0, 31, 0, "3-node shell formulation flag"),
         int_field("Idrill", 30, 0, 2, 0, "drilling DOF flag"),
-        real_field("P_thick_fail", 40, Dimension::None, kUnit, 0,
-                   "fraction of failed layers to delete the element"),
+        int_field("Ipinch", 40, 0, 1, 0, "pinching DOF flag"),
+        real_field("P_thick_fail", 60, Dimension::None, kUnit, 0,
+                   "fraction of failed through-thickness points to delete the element"),
     }));
     k.lines.push_back(line("line 2", {
-        real_field("hm", 0, Dimension::None, kNonNegative, 0.01, "membrane hourglass coefficient"),
-        real_field("hf", 20, Dimension::None, kNonNegative, 0.01, "out-of-plane hourglass coefficient"),
-        real_field("hr", 40, Dimension::None, kNonNegative, 0.01, "rotation hourglass coefficient"),
+        real_field("hm", 0, Dimension::None, {0, 0.05, false, false}, 0.01, "membrane hourglass coefficient"),
+        real_field("hf", 20, Dimension::None, {0, 0.05, false, false}, 0.01, "out-of-plane hourglass coefficient"),
+        real_field("hr", 40, Dimension::None, {0, 0.05, false, false}, 0.01, "rotation hourglass coefficient"),
         real_field("dm", 60, Dimension::None, kNonNegative, 0, "membrane damping"),
         real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
     }, true));
     k.lines.push_back(line("line 3", {
         int_field("N", 0, 0, 10, 0, "integration points through the thickness (0 = 5)", Dimension::Count),
-        int_field("Istrain", 10, 0, 2, 0, "strain output flag"),
+        int_field("Istrain", 10, 0, 2, 0, "strain output flag (Radioss 2020 layout; blank in 2024)"),
         real_field("Thick", 20, Dimension::Length, kPositive, 0, "shell thickness"),
-        real_field("Ashear", 40, Dimension::None, kNonNegative, 0, "shear factor (0 = 5/6)"),
-        int_field("Ithick", 60, 0, 2, 0, "thickness change flag"),
-        int_field("Iplas", 70, 0, 2, 0, "plane stress plasticity flag"),
+        real_field("Ashear", 40, Dimension::None, kNonNegative, 5.0 / 6.0, "shear factor (default 5/6)"),
+        int_field("Ithick", 70, 0, 2, 0, "thickness change flag"),
+        int_field("Iplas", 80, 0, 2, 0, "plane stress plasticity flag"),
+        int_field("Ipos", 90, 0, 4, 0, "reference plane position (0 = mid-surface)"),
     }));
     out.push_back(std::move(k));
   }
@@ -192,9 +194,13 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("qa", 0, Dimension::None, kNonNegative, 1.1, "quadratic bulk viscosity"),
         real_field("qb", 20, Dimension::None, kNonNegative, 0.05, "linear bulk viscosity"),
         real_field("h", 40, Dimension::None, kUnit, 0.1, "hourglass coefficient"),
+        real_field("lambda_v", 60, Dimension::None, kNonNegative, 0, "numerical viscosity lambda_v"),
+        real_field("mu_v", 80, Dimension::None, kNonNegative, 0, "numerical viscosity mu_v"),
     }, true));
     k.lines.push_back(line("line 3", {
         real_field("dtmin", 0, Dimension::Time, kNonNegative, 0, "minimum time step"),
+        int_field("Istrain", 20, 0, 2, 0, "strain output flag"),
+        int_field("Ihkt", 30, 0, 2, 0, "tangent modulus estimation flag"),
     }, true));
     out.push_back(std::move(k));
   }
