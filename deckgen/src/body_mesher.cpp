@@ -97,6 +97,27 @@ class Builder {
     m_.shell_part.push_back(part_index);
     m_.shell_thick.push_back(t);
   }
+  // A skin quad whose two triangulations differ by more than 15 deg (warpage) is split
+  // into two triangles along its shorter diagonal (part `tri_part`).
+  void skin_quad(int quad_part, int tri_part, const std::array<int, 4>& q) {
+    auto P = [&](int i) { return m_.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
+    auto ang = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+      return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
+    };
+    double w = std::max(ang((P(1) - P(0)).cross(P(2) - P(0)), (P(2) - P(0)).cross(P(3) - P(0))),
+                        ang((P(2) - P(1)).cross(P(3) - P(1)), (P(3) - P(1)).cross(P(0) - P(1))));
+    if (w <= 15) {
+      shell(quad_part, q);
+      return;
+    }
+    if ((P(2) - P(0)).norm() <= (P(3) - P(1)).norm()) {
+      tria(tri_part, {q[0], q[1], q[2]}, 0);
+      tria(tri_part, {q[0], q[2], q[3]}, 0);
+    } else {
+      tria(tri_part, {q[0], q[1], q[3]}, 0);
+      tria(tri_part, {q[1], q[2], q[3]}, 0);
+    }
+  }
   void tria(int part_index, const std::array<int, 3>& t, double th) {
     m_.trias.push_back(t);
     m_.tria_part.push_back(part_index);
@@ -192,13 +213,31 @@ class Builder {
 
 void Builder::build_torso() {
   const auto& S1 = g_.vertebra("S1");
+  // Level tilt: each disc layer keeps one tilt on both its surfaces (the mean of the rib
+  // inclinations of its two vertebrae) so that thin discs never fold; the body layer between
+  // two discs absorbs the change. Below T12 the tilt fades linearly to 0 at the L5 lower
+  // plate (no ribs).
   const double incl12 = g_.ribs[11].inclination_deg * M_PI / 180;
-  const double z_t12 = g_.vertebra("T12").lower.y(), z_l3 = g_.vertebra("L3").upper.y();
-  auto tilt_at = [&](const std::string& vert, double z) {
+  const double z_t12 = g_.vertebra("T12").lower.y(), z_l3 = g_.vertebra("L5").lower.y();
+  auto incl_of = [&](const std::string& vert, double z) {
     if (vert.size() > 1 && vert[0] == 'T') return g_.ribs[static_cast<std::size_t>(std::stoi(vert.substr(1)) - 1)].inclination_deg * M_PI / 180;
-    // Lumbar and pelvis: the tilt fades from the rib-12 value at the T12 lower plate to 0 at
-    // the L3 upper plate.
     return incl12 * std::clamp((z - z_l3) / (z_t12 - z_l3), 0.0, 1.0);
+  };
+  auto tilt_at = [&](const std::string& name, double z) {
+    // name: "T5_upper" / "T5_lower" / other; the disc above an upper plate is shared with the
+    // vertebra above, the disc below a lower plate with the vertebra below.
+    std::size_t us = name.find('_');
+    if (us == std::string::npos) return incl_of("", z);
+    std::string vert = name.substr(0, us), plate = name.substr(us + 1);
+    int i = -1;
+    for (std::size_t k = 0; k < g_.spine.size(); ++k)
+      if (g_.spine[k].name == vert) i = static_cast<int>(k);
+    if (i < 0 || (vert[0] != 'T' && vert[0] != 'L')) return incl_of("", z);
+    int other = plate == "upper" ? i - 1 : i + 1;
+    const auto& o = g_.spine[static_cast<std::size_t>(other)];
+    double zo = plate == "upper" ? o.lower.y() : o.upper.y();
+    double a = incl_of(vert, z), b = (o.name[0] == 'T' || o.name[0] == 'L') ? incl_of(o.name, zo) : a;
+    return 0.5 * (a + b);
   };
   std::vector<GridLevel> lv;
   auto add = [&](const std::string& name, double x, double z, const std::string& vert, double r) {
@@ -206,7 +245,8 @@ void Builder::build_torso() {
     l.name = name;
     l.x_spine = x;
     l.z_spine = z;
-    l.tilt = tilt_at(vert, z);
+    (void)vert;
+    l.tilt = tilt_at(name, z);
     l.body_radius = r;
     lv.push_back(l);
   };
@@ -235,6 +275,14 @@ void Builder::build_torso() {
     layers.push_back({LayerKind::Body, v.name, region});
     below = v.name;
   }
+  // Disc layers keep one spine x on both surfaces (the mean of the two endplate centres):
+  // the source's endplate centres shift up to 7 mm across a 3 mm disc (T10-T11), which
+  // would shear the thin layer; the vertebral body layers absorb the shift instead.
+  for (std::size_t k = 0; k < layers.size(); ++k)
+    if (layers[k].kind == LayerKind::Disc) {
+      double xm = 0.5 * (lv[k].x_spine + lv[k + 1].x_spine);
+      lv[k].x_spine = lv[k + 1].x_spine = xm;
+    }
   GridParams gp;
   gp.n = o_.torso_around;
   torso_ = std::make_unique<TrunkGrid>(m_, g_.torso, lv, gp);
@@ -242,7 +290,7 @@ void Builder::build_torso() {
 
   const int N = torso_->n(), m = torso_->m();
   const int vert_mat = material("vertebra");
-  std::map<std::string, int> organ, flesh, skin;
+  std::map<std::string, int> organ, flesh, skin, skin_tri;
   const auto& skin_sec = g_.shell_sections.at("skin");
   for (const char* region : {"thorax", "abdomen", "pelvis"}) {
     std::string r = region;
@@ -250,6 +298,7 @@ void Builder::build_torso() {
     organ[r] = part(r == "thorax" ? "thoracic_organs" : r == "abdomen" ? "abdominal_organs" : "pelvic_organs", ElementKind::Brick, om, r, "organs");
     flesh[r] = part("flesh_" + r, ElementKind::Brick, material("flesh"), r, "flesh");
     skin[r] = part("skin_" + r, ElementKind::Shell, material("skin"), r, "skin", skin_sec.total_thickness);
+    skin_tri[r] = part("skin_" + r + "_tria", ElementKind::Tria, material("skin"), r, "skin", skin_sec.total_thickness);
   }
   for (int l = 0; l + 1 < torso_->levels(); ++l) {
     const LayerInfo& L = layers[static_cast<std::size_t>(l)];
@@ -280,7 +329,7 @@ void Builder::build_torso() {
       }
     for (int j = 0; j < N; ++j) {
       auto q = torso_->ring_face(l, 3, j);
-      shell(skin.at(L.region), q);
+      skin_quad(skin.at(L.region), skin_tri.at(L.region), q);
       torso_skin_.push_back(q);
     }
   }
@@ -498,12 +547,17 @@ void Builder::build_neck() {
   const auto& c1 = g_.vertebra("C1");
   lv.push_back({"C0", c1.upper.x(), c1.upper.y() + 6.0, 0, 8});
   layers.push_back({LayerKind::Disc, "C0C1", "neck"});
+  for (std::size_t k = 1; k < layers.size(); ++k)  // same disc treatment as the torso (base excluded: tied)
+    if (layers[k].kind == LayerKind::Disc) {
+      double xm = 0.5 * (lv[k].x_spine + lv[k + 1].x_spine);
+      lv[k].x_spine = lv[k + 1].x_spine = xm;
+    }
   // Tilt: from the torso top value at the base to 0 at the skull base, linear in level index.
   const int L = static_cast<int>(lv.size());
   for (int l = 0; l < L; ++l) lv[static_cast<std::size_t>(l)].tilt = base.tilt * (1.0 - static_cast<double>(l) / (L - 1));
   GridParams gp;
   gp.n = o_.neck_around;
-  gp.relax_length = 12;
+  gp.relax_length = 30;
   neck_ = std::make_unique<TrunkGrid>(m_, g_.neck, lv, gp);
   neck_layers_ = layers;
   neck_top_level_ = L - 1;
@@ -513,6 +567,7 @@ void Builder::build_neck() {
   int visceral = part("neck_visceral", ElementKind::Brick, material("flesh"), "neck", "neck");
   int muscles = part("neck_muscles", ElementKind::Brick, material("muscle"), "neck", "neck");
   int skin = part("skin_neck", ElementKind::Shell, material("skin"), "neck", "skin", g_.shell_sections.at("skin").total_thickness);
+  int skin_tri = part("skin_neck_tria", ElementKind::Tria, material("skin"), "neck", "skin", g_.shell_sections.at("skin").total_thickness);
   int vmat = material("vertebra"), dmat = material("disc_cervical");
   for (int l = 0; l + 1 < L; ++l) {
     const LayerInfo& Ly = layers[static_cast<std::size_t>(l)];
@@ -532,7 +587,7 @@ void Builder::build_neck() {
       }
     for (int j = 0; j < N; ++j) {
       auto q = neck_->ring_face(l, 3, j);
-      shell(skin, q);
+      skin_quad(skin, skin_tri, q);
       neck_skin_.push_back(q);
     }
     if (Ly.kind == LayerKind::Body) rb_nodes_["vertebra_" + Ly.vertebra] = col_nodes;

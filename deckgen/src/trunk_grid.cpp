@@ -59,9 +59,15 @@ TrunkGrid::TrunkGrid(FeModel& model, const SectionTable& sections, std::vector<G
     double xb = lv.x_spine + lv.body_radius;
     double xf = lv.x_spine + p_.block_front * s0.wall_depth;
     double yh = p_.block_half_width * s0.wall_half_width;
+    // The back edge of the block bulges backwards only at the midline (the vertebral body):
+    // x_back(v) = xb + (xc - xb) v^2, v in [-1, 1], so the block corners sit well inside the
+    // wall and the O-grid corner cells keep their angles.
+    const double xc = lv.x_spine + p_.block_corner_back * s0.wall_depth;
     for (int a = 0; a <= m; ++a)
       for (int b = 0; b <= m; ++b) {
-        double x = xb + (xf - xb) * a / m, y = -yh + 2 * yh * b / m;
+        double v = -1 + 2.0 * b / m;
+        double xback = xb + (std::max(xc, xb) - xb) * v * v;
+        double x = xback + (xf - xback) * a / m, y = yh * v;
         model_.add_node({x, y, level_height(l, x, y)});
       }
     // Rings 1..3: left half j = 0..N/2 computed, right half mirrored.
@@ -91,6 +97,27 @@ TrunkGrid::TrunkGrid(FeModel& model, const SectionTable& sections, std::vector<G
         if (r == 2) q.z() = level_height(l, q.x(), q.y());
         model_.add_node(q);
       }
+  }
+  enforce_min_thickness();
+}
+
+void TrunkGrid::enforce_min_thickness() {
+  // Away from the spine (relaxation weight below 1/2) a layer is kept at least 30 % of the
+  // evenly spaced height thick: tilt changes between levels can otherwise fold thin layers
+  // at the front of the trunk. Nodes are pushed up level by level.
+  const int L = static_cast<int>(levels_.size());
+  const int per_level = (m() + 1) * (m() + 1) + 3 * p_.n;
+  for (int l = 1; l < L; ++l) {
+    auto k = static_cast<std::size_t>(l);
+    double min_t = 0.3 * (z_uniform_[k] - z_uniform_[k - 1]);
+    const GridLevel& lv = levels_[k];
+    for (int i = 0; i < per_level; ++i) {
+      auto& top = model_.nodes[static_cast<std::size_t>(first_[k] + i)];
+      const auto& bot = model_.nodes[static_cast<std::size_t>(first_[k - 1] + i)];
+      double d = std::hypot(top.x() - lv.x_spine, top.y());
+      double w = d <= lv.body_radius ? 1.0 : std::exp(-std::pow((d - lv.body_radius) / p_.relax_length, 2));
+      if (w < 0.5 && top.z() < bot.z() + min_t) top.z() = bot.z() + min_t;
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 // hbm-deckgen: generates the 50th percentile male driver model deck from geometry/.
 #include "hbm/deckgen/body_mesher.hpp"
 #include "hbm/deckgen/geometry_sources.hpp"
+#include "hbm/deckgen/model_checks.hpp"
 #include "hbm/deckgen/table.hpp"
 
 #include <CLI/CLI.hpp>
@@ -16,9 +17,14 @@ int main(int argc, char** argv) {
   try {
     auto g = hbm::deckgen::load_geometry(geometry);
     hbm::deckgen::MesherOptions o;
-    auto m = hbm::deckgen::build_body_model(g, o);
-    std::cout << "nodes " << m.nodes.size() << " bricks " << m.bricks.size() << " shells " << m.shells.size() << " trias "
-              << m.trias.size() << " springs " << m.springs.size() << " total " << m.element_count() << "\n";
+    hbm::deckgen::ModelLandmarks lm;
+    auto m = hbm::deckgen::build_body_model(g, o, &lm);
+    hbm::deckgen::assign_rigid_body_masses(m, g);
+    using namespace hbm::deckgen;
+    print_budget(std::cout, element_budget(m), 10000, 12000);
+    print_time_step(std::cout, time_step_check(m), 0.005);
+    print_quality(std::cout, quality_check(m));
+    print_mass(std::cout, mass_check(m, g, lm), 0.10, 15);
   } catch (const std::exception& e) {
     std::cerr << "hbm-deckgen: error: " << e.what() << "\n";
     return 1;

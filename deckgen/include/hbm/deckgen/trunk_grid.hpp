@@ -28,9 +28,10 @@ struct GridLevel {
 struct GridParams {
   int n = 32;                 // nodes around (multiple of 8)
   double flesh_fraction = 0.45;  // ring 2 between wall and skin
-  double relax_length = 25;   // mm: decay length of the endplate-following zone
+  double relax_length = 15;   // mm: decay length of the endplate-following zone
   double block_front = 0.72;  // inner block front at this fraction of the wall depth
   double block_half_width = 0.5;  // inner block half-width / wall half-width
+  double block_corner_back = 0.0;   // block back corners at this fraction of the wall depth (0: straight back edge)
 };
 
 class TrunkGrid {
@@ -62,6 +63,7 @@ class TrunkGrid {
 
  private:
   std::array<int, 8> oriented(std::array<int, 8> h) const;
+  void enforce_min_thickness();
   FeModel& model_;
   const SectionTable& sections_;
   std::vector<GridLevel> levels_;

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// hbm-loadcase: writes the pendulum (hub) impact validation decks on the generated body
+// model: decks/<case>/<case>_0000.rad + _0001.rad, which #include decks/hbm50/hbm50.inc.
+#include "hbm/deckgen/loadcases/load_case.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace hbm::deckgen::loadcases;
+  CLI::App app{"hbm-loadcase: pendulum impact validation decks on the body model"};
+  std::string model = "decks/hbm50/hbm50.inc", geometry = "geometry", decks_dir = "decks", out;
+  std::vector<std::string> cases;
+  double speed = 0, tstop = 0;
+  bool list = false;
+  app.add_option("--model", model, "body model deck (included by the load-case decks)");
+  app.add_option("--geometry", geometry, "geometry sources (spine and pelvis landmarks)");
+  app.add_option("--case", cases, "case name(s), or 'all' (see --list)");
+  app.add_option("--decks", decks_dir, "folder receiving one folder per case");
+  app.add_option("--out", out, "output folder for a single case (default DECKS/NAME)");
+  app.add_option("--speed", speed, "impactor speed in m/s (overrides the case's; single case only)")->check(CLI::PositiveNumber);
+  app.add_option("--tstop", tstop, "end time in ms (default 60)")->check(CLI::PositiveNumber);
+  app.add_flag("--list", list, "list the cases and exit");
+  CLI11_PARSE(app, argc, argv);
+  if (list) {
+    for (const auto& c : catalogue())
+      std::cout << c.name << "  " << c.title << "  [" << c.reference << "; " << c.corridor_case << "]\n";
+    return 0;
+  }
+  if (cases.size() == 1 && cases[0] == "all") {
+    cases.clear();
+    for (const auto& c : catalogue()) cases.push_back(c.name);
+  }
+  if (cases.empty()) {
+    std::cerr << "hbm-loadcase: give --case NAME (or all); --list shows the cases\n";
+    return 2;
+  }
+  if ((!out.empty() || speed > 0) && cases.size() != 1) {
+    std::cerr << "hbm-loadcase: --out and --speed need exactly one --case\n";
+    return 2;
+  }
+  std::vector<LoadCaseSpec> specs;
+  for (const auto& n : cases) {
+    const LoadCaseSpec* s = find_case(n);
+    if (!s) {
+      std::cerr << "hbm-loadcase: unknown case '" << n << "'; known cases:";
+      for (const auto& c : catalogue()) std::cerr << " " << c.name;
+      std::cerr << "\n";
+      return 2;
+    }
+    specs.push_back(*s);
+    if (speed > 0) specs.back().speed_m_s = speed;
+    if (tstop > 0) specs.back().tstop_ms = tstop;
+  }
+  try {
+    const ModelView m = read_model(model);
+    for (const auto& s : specs) {
+      const std::filesystem::path dir = out.empty() ? std::filesystem::path(decks_dir) / s.name : std::filesystem::path(out);
+      const GeneratedCase g = generate_load_case(s, m, model, geometry, dir);
+      print_generated(std::cout, s, g);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "hbm-loadcase: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,476 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Budget, time step / added mass, quality and mass-property checks (see model_checks.hpp).
+#include "hbm/deckgen/model_checks.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace hbm::deckgen {
+
+namespace {
+
+using V3 = Eigen::Vector3d;
+
+constexpr int kNat[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+const V3& X(const FeModel& m, int n) { return m.nodes[static_cast<std::size_t>(n)]; }
+
+// Trilinear Jacobian determinant at natural coordinates (xi, eta, zeta).
+double hex_detj(const FeModel& m, const std::array<int, 8>& h, double xi, double eta, double zeta) {
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 8; ++i) {
+    double a = kNat[i][0], b = kNat[i][1], c = kNat[i][2];
+    V3 p = X(m, h[static_cast<std::size_t>(i)]);
+    double dxi = a * (1 + b * eta) * (1 + c * zeta) / 8, deta = b * (1 + a * xi) * (1 + c * zeta) / 8,
+           dzeta = c * (1 + a * xi) * (1 + b * eta) / 8;
+    J.col(0) += dxi * p;
+    J.col(1) += deta * p;
+    J.col(2) += dzeta * p;
+  }
+  return J.determinant();
+}
+
+double hex_volume(const FeModel& m, const std::array<int, 8>& h) {
+  const double g = 1 / std::sqrt(3.0);
+  double v = 0;
+  for (int i = 0; i < 8; ++i) v += hex_detj(m, h, kNat[i][0] * g, kNat[i][1] * g, kNat[i][2] * g);
+  return v;
+}
+
+double quad_area(const V3& a, const V3& b, const V3& c, const V3& d) { return 0.5 * (c - a).cross(d - b).norm(); }
+double tri_area(const V3& a, const V3& b, const V3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
+
+double hex_char_length(const FeModel& m, const std::array<int, 8>& h) {
+  double amax = 0;
+  for (const auto& f : kFaces)
+    amax = std::max(amax, quad_area(X(m, h[static_cast<std::size_t>(f[0])]), X(m, h[static_cast<std::size_t>(f[1])]),
+                                    X(m, h[static_cast<std::size_t>(f[2])]), X(m, h[static_cast<std::size_t>(f[3])])));
+  return hex_volume(m, h) / amax;
+}
+
+double max_side(const std::vector<V3>& p) {
+  double s = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) s = std::max(s, (p[(i + 1) % p.size()] - p[i]).norm());
+  return s;
+}
+
+double min_side(const std::vector<V3>& p) {
+  double s = 1e300;
+  for (std::size_t i = 0; i < p.size(); ++i) s = std::min(s, (p[(i + 1) % p.size()] - p[i]).norm());
+  return s;
+}
+
+const FeMaterial& mat_of(const FeModel& m, int part) {
+  return m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)];
+}
+
+double shell_t(const FeModel& m, int part, double elem_t) {
+  return elem_t > 0 ? elem_t : m.parts[static_cast<std::size_t>(part)].thickness;
+}
+
+std::string kind_name(ElementKind k) {
+  switch (k) {
+    case ElementKind::Brick: return "BRICK";
+    case ElementKind::Shell: return "SHELL";
+    case ElementKind::Tria: return "SH3N";
+    case ElementKind::Spring: return "SPRING";
+  }
+  return "?";
+}
+
+// Point masses of one segment (element masses lumped at nodes) and rigid-body added data.
+struct PointSet {
+  std::vector<std::pair<V3, double>> points;
+  Eigen::Matrix3d extra_inertia = Eigen::Matrix3d::Zero();  // about each added mass's own point, summed later
+  std::vector<std::pair<V3, std::pair<double, Eigen::Matrix3d>>> added;
+};
+
+Eigen::Matrix3d point_inertia(const V3& r, double mass) {
+  return mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+}
+
+void segment_points(const FeModel& m, const std::string& seg, std::vector<std::pair<V3, double>>& pts) {
+  auto add = [&](int part, const int* nodes, int k, double mass) {
+    if (m.parts[static_cast<std::size_t>(part)].segment != seg) return;
+    for (int i = 0; i < k; ++i) pts.push_back({X(m, nodes[i]), mass / k});
+  };
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) add(m.brick_part[e], m.bricks[e].data(), 8, element_mass(m, ElementKind::Brick, e));
+  for (std::size_t e = 0; e < m.shells.size(); ++e) add(m.shell_part[e], m.shells[e].data(), 4, element_mass(m, ElementKind::Shell, e));
+  for (std::size_t e = 0; e < m.trias.size(); ++e) add(m.tria_part[e], m.trias[e].data(), 3, element_mass(m, ElementKind::Tria, e));
+}
+
+}  // namespace
+
+double element_mass(const FeModel& m, ElementKind kind, std::size_t e) {
+  switch (kind) {
+    case ElementKind::Brick: return mat_of(m, m.brick_part[e]).rho * hex_volume(m, m.bricks[e]);
+    case ElementKind::Shell: {
+      const auto& q = m.shells[e];
+      return mat_of(m, m.shell_part[e]).rho * quad_area(X(m, q[0]), X(m, q[1]), X(m, q[2]), X(m, q[3])) *
+             shell_t(m, m.shell_part[e], m.shell_thick[e]);
+    }
+    case ElementKind::Tria: {
+      const auto& t = m.trias[e];
+      return mat_of(m, m.tria_part[e]).rho * tri_area(X(m, t[0]), X(m, t[1]), X(m, t[2])) * shell_t(m, m.tria_part[e], m.tria_thick[e]);
+    }
+    case ElementKind::Spring: return 0;
+  }
+  return 0;
+}
+
+std::vector<double> element_nodal_masses(const FeModel& m) {
+  std::vector<double> nm(m.nodes.size(), 0.0);
+  for (std::size_t e = 0; e < m.bricks.size(); ++e)
+    for (int n : m.bricks[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Brick, e) / 8;
+  for (std::size_t e = 0; e < m.shells.size(); ++e)
+    for (int n : m.shells[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Shell, e) / 4;
+  for (std::size_t e = 0; e < m.trias.size(); ++e)
+    for (int n : m.trias[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Tria, e) / 3;
+  return nm;
+}
+
+void assign_rigid_body_masses(FeModel& m, const GeometrySources& g) {
+  for (auto& rb : m.rigid_bodies) {
+    rb.added_mass = 0;
+    rb.added_inertia.setZero();
+    const SegmentTarget* t = nullptr;
+    for (const auto& s : g.targets)
+      if (s.name == rb.name && s.cog_mode == "link") t = &s;
+    if (!t) continue;
+    const SkeletonLink& l = g.skeleton.link(rb.name);
+    V3 cog = X(m, rb.main_node);  // main node sits at the (posture-moved) link CoG
+    Eigen::Matrix3d R = g.skeleton.motion(rb.name).linear();
+    Eigen::Matrix3d I_target = R * l.inertia * R.transpose();
+    std::vector<std::pair<V3, double>> pts;
+    segment_points(m, rb.name, pts);
+    double me = 0;
+    Eigen::Matrix3d Ie = Eigen::Matrix3d::Zero();
+    for (const auto& [p, w] : pts) {
+      me += w;
+      Ie += point_inertia(p - cog, w);
+    }
+    if (me >= t->mass)
+      throw std::runtime_error("segment " + rb.name + ": envelope elements weigh " + std::to_string(me) + " kg, more than the target " +
+                               std::to_string(t->mass) + " kg (" + g.dir.string() + "/segment_targets.csv:" + std::to_string(t->line) + ")");
+    rb.added_mass = t->mass - me;
+    Eigen::Matrix3d Ia = I_target - Ie;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Ia);
+    Eigen::Vector3d ev = es.eigenvalues();
+    double floor = 0.05 * I_target.trace() / 3;
+    for (int i = 0; i < 3; ++i) ev(i) = std::max(ev(i), floor);
+    rb.added_inertia = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
+  }
+}
+
+std::vector<BudgetRow> element_budget(const FeModel& m) {
+  std::map<std::pair<std::string, std::string>, std::size_t> c;
+  for (int p : m.brick_part) c[{m.parts[static_cast<std::size_t>(p)].region, "BRICK"}]++;
+  for (int p : m.shell_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SHELL"}]++;
+  for (int p : m.tria_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SH3N"}]++;
+  for (int p : m.spring_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SPRING"}]++;
+  std::vector<BudgetRow> out;
+  for (const auto& [k, n] : c) out.push_back({k.first, k.second, n});
+  return out;
+}
+
+TimeStepReport time_step_check(const FeModel& m, double tsca, double tmin) {
+  TimeStepReport r;
+  r.tsca = tsca;
+  r.tmin = tmin;
+  std::vector<double> nm = element_nodal_masses(m);
+  std::vector<bool> in_rb(m.nodes.size(), false);
+  for (const auto& b : m.rigid_bodies)
+    for (int n : b.nodes) in_rb[static_cast<std::size_t>(n)] = true;
+  std::vector<double> kn(m.nodes.size(), 0.0);
+  std::vector<std::map<int, double>> k_by_part(m.nodes.size());
+  std::vector<TimeStepRow> rows(m.parts.size());
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    rows[p].part = m.parts[p].name;
+    rows[p].dt_min = 1e30;
+    rows[p].length_min = 1e30;
+    rows[p].rigid = m.parts[p].rigid;
+  }
+  auto element = [&](int part, const int* nodes, int k, double L, double c, double mass) {
+    auto& row = rows[static_cast<std::size_t>(part)];
+    if (row.rigid) return;
+    double dt = L / c;
+    if (dt < row.dt_min) {
+      row.dt_min = dt;
+      row.length_min = L;
+    }
+    if (tsca * dt < tmin) row.below++;
+    double ke = 2 * (mass / k) / (dt * dt);
+    for (int i = 0; i < k; ++i) {
+      auto n = static_cast<std::size_t>(nodes[i]);
+      kn[n] += ke;
+      k_by_part[n][part] += ke;
+    }
+  };
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    int p = m.brick_part[e];
+    element(p, m.bricks[e].data(), 8, hex_char_length(m, m.bricks[e]), mat_of(m, p).solid_wave_speed(), element_mass(m, ElementKind::Brick, e));
+  }
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    int p = m.shell_part[e];
+    const auto& q = m.shells[e];
+    std::vector<V3> pts{X(m, q[0]), X(m, q[1]), X(m, q[2]), X(m, q[3])};
+    double L = quad_area(pts[0], pts[1], pts[2], pts[3]) / max_side(pts);
+    element(p, q.data(), 4, L, mat_of(m, p).plate_wave_speed(), element_mass(m, ElementKind::Shell, e));
+  }
+  for (std::size_t e = 0; e < m.trias.size(); ++e) {
+    int p = m.tria_part[e];
+    const auto& t = m.trias[e];
+    std::vector<V3> pts{X(m, t[0]), X(m, t[1]), X(m, t[2])};
+    double L = 2 * tri_area(pts[0], pts[1], pts[2]) / max_side(pts);
+    element(p, t.data(), 3, L, mat_of(m, p).plate_wave_speed(), element_mass(m, ElementKind::Tria, e));
+  }
+  for (std::size_t e = 0; e < m.springs.size(); ++e) {
+    const FePart& part = m.parts[static_cast<std::size_t>(m.spring_part[e])];
+    const FeSpringProp& sp = m.spring_props[static_cast<std::size_t>(part.spring_prop)];
+    double k = sp.type == 4 ? sp.k[0] : std::max({sp.k[0], sp.k[1], sp.k[2]});
+    for (int n : m.springs[e]) {
+      kn[static_cast<std::size_t>(n)] += k;
+      k_by_part[static_cast<std::size_t>(n)][m.spring_part[e]] += k;
+    }
+  }
+  const double f = (tmin / tsca) * (tmin / tsca) / 2;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    r.total_mass += nm[n];
+    if (in_rb[n] || kn[n] <= 0) continue;
+    double add = kn[n] * f - nm[n];
+    if (add <= 0) continue;
+    r.added_mass += add;
+    for (const auto& [p, k] : k_by_part[n]) rows[static_cast<std::size_t>(p)].added_mass += add * k / kn[n];
+  }
+  for (const auto& b : m.rigid_bodies) r.total_mass += b.added_mass;
+  for (auto& row : rows)
+    if (row.dt_min > 1e29) row.dt_min = row.length_min = 0;
+  r.parts = rows;
+  return r;
+}
+
+std::vector<QualityRow> quality_check(const FeModel& m, const QualityLimits& lim) {
+  std::vector<QualityRow> rows(m.parts.size());
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    rows[p].part = m.parts[p].name;
+    rows[p].kind = kind_name(m.parts[p].kind);
+  }
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    auto& row = rows[static_cast<std::size_t>(m.brick_part[e])];
+    const auto& h = m.bricks[e];
+    double jmin = 1e300, jmax = -1e300;
+    for (int i = 0; i < 8; ++i) {
+      double d = hex_detj(m, h, kNat[i][0], kNat[i][1], kNat[i][2]);
+      jmin = std::min(jmin, d);
+      jmax = std::max(jmax, d);
+    }
+    double lmin = 1e300, lmax = 0;
+    for (const auto& ed : kEdges) {
+      double l = (X(m, h[static_cast<std::size_t>(ed[1])]) - X(m, h[static_cast<std::size_t>(ed[0])])).norm();
+      lmin = std::min(lmin, l);
+      lmax = std::max(lmax, l);
+    }
+    double jr = jmax > 0 ? jmin / jmax : -1, ar = lmax / lmin;
+    row.elements++;
+    if (jmin <= 0) row.inverted++;
+    row.jacobian_min = std::min(row.jacobian_min, jr);
+    row.aspect_max = std::max(row.aspect_max, ar);
+    row.length_min = std::min(row.length_min, lmin);
+    if (jmin <= 0 || jr < lim.brick_jacobian_hard || ar > lim.brick_aspect_hard) row.failing++;
+    if (jr < lim.brick_jacobian_min || ar > lim.brick_aspect_max) row.soft_failing++;
+  }
+  for (std::size_t e = 0; e < m.shells.size(); ++e) {
+    auto& row = rows[static_cast<std::size_t>(m.shell_part[e])];
+    const auto& q = m.shells[e];
+    std::vector<V3> p{X(m, q[0]), X(m, q[1]), X(m, q[2]), X(m, q[3])};
+    V3 nrm = (p[2] - p[0]).cross(p[3] - p[1]).normalized();
+    double jmin = 1e300, jmax = -1e300;
+    for (int i = 0; i < 4; ++i) {
+      V3 a = p[static_cast<std::size_t>((i + 1) % 4)] - p[static_cast<std::size_t>(i)], b = p[static_cast<std::size_t>((i + 3) % 4)] - p[static_cast<std::size_t>(i)];
+      double d = a.cross(b).dot(nrm);
+      jmin = std::min(jmin, d);
+      jmax = std::max(jmax, d);
+    }
+    auto angle = [](const V3& u, const V3& v) {
+      return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
+    };
+    double w1 = angle((p[1] - p[0]).cross(p[2] - p[0]), (p[2] - p[0]).cross(p[3] - p[0]));
+    double w2 = angle((p[2] - p[1]).cross(p[3] - p[1]), (p[3] - p[1]).cross(p[0] - p[1]));
+    double warp = std::max(w1, w2);
+    double jr = jmax > 0 ? jmin / jmax : -1, ar = max_side(p) / min_side(p);
+    row.elements++;
+    if (jmin <= 0) row.inverted++;
+    row.jacobian_min = std::min(row.jacobian_min, jr);
+    row.aspect_max = std::max(row.aspect_max, ar);
+    row.warpage_max_deg = std::max(row.warpage_max_deg, warp);
+    row.length_min = std::min(row.length_min, min_side(p));
+    if (jmin <= 0 || jr < lim.shell_jacobian_hard || ar > lim.shell_aspect_hard || warp > lim.shell_warpage_hard_deg) row.failing++;
+    if (jr < lim.shell_jacobian_min || ar > lim.shell_aspect_max || warp > lim.shell_warpage_max_deg) row.soft_failing++;
+  }
+  for (std::size_t e = 0; e < m.trias.size(); ++e) {
+    auto& row = rows[static_cast<std::size_t>(m.tria_part[e])];
+    const auto& t = m.trias[e];
+    std::vector<V3> p{X(m, t[0]), X(m, t[1]), X(m, t[2])};
+    double A = tri_area(p[0], p[1], p[2]);
+    double per = (p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm();
+    double ar = A > 0 ? max_side(p) * per / (4 * std::sqrt(3.0) * A) : 1e30;
+    row.elements++;
+    if (A <= 1e-12) row.inverted++;
+    row.aspect_max = std::max(row.aspect_max, ar);
+    row.length_min = std::min(row.length_min, min_side(p));
+    if (A <= 1e-12 || ar > lim.tria_aspect_hard) row.failing++;
+    if (ar > lim.tria_aspect_max) row.soft_failing++;
+  }
+  std::vector<QualityRow> out;
+  for (auto& r : rows)
+    if (r.elements) out.push_back(r);
+  return out;
+}
+
+MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLandmarks& lm) {
+  MassReport rep;
+  std::vector<double> nm = element_nodal_masses(m);
+  for (double x : nm) rep.total += x;
+  for (const auto& b : m.rigid_bodies) rep.total += b.added_mass;
+  for (const auto& t : g.targets) {
+    rep.total_target += t.mass;
+    MassRow row;
+    row.segment = t.name;
+    row.target_mass = t.mass;
+    row.check_cog = t.check_cog;
+    std::vector<std::pair<V3, double>> pts;
+    segment_points(m, t.name, pts);
+    std::vector<std::pair<V3, std::pair<double, Eigen::Matrix3d>>> added;
+    for (const auto& b : m.rigid_bodies)
+      if (b.segment == t.name && b.added_mass > 0) added.push_back({X(m, b.main_node), {b.added_mass, b.added_inertia}});
+    double mass = 0;
+    V3 mc = V3::Zero();
+    for (const auto& [p, w] : pts) { mass += w; mc += w * p; }
+    for (const auto& a : added) { mass += a.second.first; mc += a.second.first * a.first; }
+    row.mass = mass;
+    row.cog = mass > 0 ? V3(mc / mass) : V3::Zero();
+    Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+    for (const auto& [p, w] : pts) I += point_inertia(p - row.cog, w);
+    for (const auto& a : added) I += a.second.second + point_inertia(a.first - row.cog, a.second.first);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(I);
+    row.principal = es.eigenvalues();
+    if (t.cog_mode == "link") {
+      const SkeletonLink& l = g.skeleton.link(t.name);
+      row.target_cog = g.skeleton.motion(t.name) * l.cog;
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> et(l.inertia);
+      row.target_principal = et.eigenvalues();
+      row.has_target_inertia = true;
+    } else {
+      std::string top, bottom;
+      if (t.name == "thorax") { top = "T1_upper"; bottom = "T12_lower"; }
+      else if (t.name == "abdomen") { top = "T12_lower"; bottom = "L5_lower"; }
+      else if (t.name == "pelvis") { top = "L5_lower"; bottom = "seat"; }
+      else if (t.name == "neck") { top = "C0"; bottom = "T1_upper"; }
+      else throw std::runtime_error("segment_targets.csv:" + std::to_string(t.line) + ": axis CoG defined only for thorax, abdomen, pelvis, neck");
+      V3 a = lm.boundary_centres.at(top), b = lm.boundary_centres.at(bottom);
+      row.target_cog = a + t.axis_fraction * (b - a);
+    }
+    rep.segments.push_back(row);
+  }
+  return rep;
+}
+
+bool print_budget(std::ostream& os, const std::vector<BudgetRow>& rows, std::size_t total_min, std::size_t total_max) {
+  std::size_t total = 0;
+  os << "Element budget (region, type, count)\n";
+  for (const auto& r : rows) {
+    os << "  " << std::left << std::setw(12) << r.region << std::setw(8) << r.kind << std::right << std::setw(8) << r.count << "\n";
+    total += r.count;
+  }
+  bool ok = total >= total_min && total <= total_max;
+  os << "  total " << total << " elements (budget " << total_min << "-" << total_max << "): " << (ok ? "OK" : "FAIL") << "\n";
+  return ok;
+}
+
+bool print_time_step(std::ostream& os, const TimeStepReport& r, double max_added_ratio) {
+  os << "Time step at t = 0 (Tsca " << r.tsca << ", Tmin " << r.tmin * 1e3 << " us; dt = L/c per element)\n";
+  os << "  " << std::left << std::setw(26) << "part" << std::right << std::setw(12) << "dt_min[us]" << std::setw(10) << "L[mm]"
+     << std::setw(8) << "below" << std::setw(14) << "added[g]" << "\n";
+  bool ok = true;
+  for (const auto& p : r.parts) {
+    if (p.rigid) continue;
+    if (p.dt_min == 0 && p.added_mass == 0) continue;
+    os << "  " << std::left << std::setw(26) << p.part << std::right << std::fixed << std::setprecision(3) << std::setw(12)
+       << p.dt_min * 1e3 << std::setw(10) << std::setprecision(2) << p.length_min << std::setw(8) << p.below << std::setw(14)
+       << std::setprecision(3) << p.added_mass * 1e3 << "\n";
+  }
+  double ratio = r.added_ratio();
+  ok = ratio <= max_added_ratio;
+  os << std::setprecision(4) << "  total mass " << r.total_mass << " kg, added mass " << r.added_mass * 1e3 << " g = " << ratio * 100
+     << " % (limit " << max_added_ratio * 100 << " %): " << (ok ? "OK" : "FAIL") << "\n";
+  os.unsetf(std::ios::floatfield);
+  return ok;
+}
+
+bool quality_ok(const QualityRow& r, const QualityLimits& lim) {
+  // The share criterion needs a population: parts of fewer than 20 elements (a disc, a
+  // vertebra) are held to the hard limits only.
+  if (r.elements < 20) return r.inverted == 0 && r.failing == 0;
+  return r.inverted == 0 && r.failing == 0 && r.soft_failing <= lim.soft_share_max * static_cast<double>(r.elements);
+}
+
+bool print_quality(std::ostream& os, const std::vector<QualityRow>& rows, const QualityLimits& lim) {
+  os << "Element quality per part. Every element: not inverted; brick Jacobian ratio >= " << lim.brick_jacobian_hard
+     << ", aspect <= " << lim.brick_aspect_hard << "; shell Jacobian >= " << lim.shell_jacobian_hard << ", aspect <= "
+     << lim.shell_aspect_hard << ", warpage <= " << lim.shell_warpage_hard_deg << " deg; SH3N aspect <= " << lim.tria_aspect_hard
+     << ".\n  Target (at most " << lim.soft_share_max * 100 << " % of a part of >= 20 elements outside): brick Jacobian >= " << lim.brick_jacobian_min
+     << ", aspect <= " << lim.brick_aspect_max << "; shell Jacobian >= " << lim.shell_jacobian_min << ", aspect <= "
+     << lim.shell_aspect_max << ", warpage <= " << lim.shell_warpage_max_deg << " deg; SH3N aspect <= " << lim.tria_aspect_max << ".\n";
+  os << "  " << std::left << std::setw(26) << "part" << std::setw(7) << "type" << std::right << std::setw(7) << "elems" << std::setw(5)
+     << "inv" << std::setw(8) << "jac_min" << std::setw(8) << "asp_max" << std::setw(9) << "warp_max" << std::setw(8) << "l_min" << std::setw(6)
+     << "hard" << std::setw(8) << "target%" << "  status\n";
+  bool ok = true;
+  for (const auto& r : rows) {
+    bool rok = quality_ok(r, lim);
+    os << "  " << std::left << std::setw(26) << r.part << std::setw(7) << r.kind << std::right << std::setw(7) << r.elements << std::setw(5)
+       << r.inverted << std::fixed << std::setprecision(2) << std::setw(8) << r.jacobian_min << std::setw(8) << r.aspect_max << std::setw(9)
+       << r.warpage_max_deg << std::setw(8) << r.length_min << std::setw(6) << r.failing << std::setprecision(1) << std::setw(8)
+       << 100.0 * static_cast<double>(r.soft_failing) / static_cast<double>(r.elements) << "  " << (rok ? "OK" : "FAIL") << "\n";
+    ok = ok && rok;
+  }
+  os.unsetf(std::ios::floatfield);
+  os << "  quality: " << (ok ? "OK" : "FAIL") << "\n";
+  return ok;
+}
+
+bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double cog_tol_mm) {
+  os << "Mass properties per segment (mesh vs reference; mass within " << mass_tol * 100 << " %, CoG within " << cog_tol_mm
+     << " mm where checked)\n";
+  os << "  " << std::left << std::setw(11) << "segment" << std::right << std::setw(9) << "mass" << std::setw(9) << "target" << std::setw(8)
+     << "err%" << std::setw(24) << "CoG [mm]" << std::setw(8) << "dCoG" << std::setw(30) << "principal I [kg mm2]" << "  status\n";
+  bool ok = true;
+  for (const auto& s : r.segments) {
+    bool mok = std::abs(s.mass_error()) <= mass_tol;
+    bool cok = !s.check_cog || s.cog_error() <= cog_tol_mm;
+    ok = ok && mok && cok;
+    std::ostringstream cog, pi;
+    cog << std::fixed << std::setprecision(1) << s.cog.x() << " " << s.cog.y() << " " << s.cog.z();
+    pi << std::fixed << std::setprecision(0) << s.principal(0) << " " << s.principal(1) << " " << s.principal(2);
+    if (s.has_target_inertia) pi << " (" << s.target_principal(0) << " " << s.target_principal(1) << " " << s.target_principal(2) << ")";
+    os << "  " << std::left << std::setw(11) << s.segment << std::right << std::fixed << std::setprecision(3) << std::setw(9) << s.mass
+       << std::setw(9) << s.target_mass << std::setprecision(1) << std::setw(8) << s.mass_error() * 100 << std::setw(24) << cog.str()
+       << std::setw(8) << s.cog_error() << std::setw(30) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
+       << (s.check_cog ? "" : " (CoG not checked)") << "\n";
+  }
+  os << std::setprecision(3) << "  total mass " << r.total << " kg (segment targets sum " << r.total_target << " kg): "
+     << (std::abs(r.total - r.total_target) <= mass_tol * r.total_target ? "OK" : "FAIL") << "\n";
+  os.unsetf(std::ios::floatfield);
+  return ok && std::abs(r.total - r.total_target) <= mass_tol * r.total_target;
+}
+
+}  // namespace hbm::deckgen
