@@ -24,7 +24,10 @@ FieldSpec fct(std::string_view name, int col, std::string_view meaning) {
 }
 
 LineSpec density_line() {
-  return line("density", {real_field("rho", 0, Dimension::Density, kPositive, 0, "initial density")});
+  return line("density", {
+      real_field("rho", 0, Dimension::Density, kPositive, 0, "initial density (rho_i)"),
+      real_field("rho0", 20, Dimension::Density, kNonNegative, 0, "reference density for the equation of state (0 = rho)"),
+  });
 }
 
 }  // namespace
@@ -281,14 +284,14 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("Chard", 20, Dimension::None, kUnit, 0, "hardening coefficient (0 isotropic)"),
         real_field("F_cut", 40, Dimension::Frequency, kNonNegative, 0, "strain rate cutoff frequency"),
         real_field("EPS_f", 60, Dimension::Strain, kNonNegative, 0, "failure strain"),
-        int_field("Vp", 80, 0, 2, 0, "strain rate choice flag"),
+        int_field("Vp", 90, 0, 2, 0, "strain rate choice flag"),
     }));
     k.lines.push_back(line("pressure", {
         fct("fct_IDp", 0, "yield scale factor vs pressure"),
-        real_field("Fscale_p", 20, Dimension::Stress, kAny, 0, "scale of fct_IDp"),
-        fct("fct_IDE", 40, "Young's modulus scale vs plastic strain"),
-        real_field("Einf", 60, Dimension::Stress, kNonNegative, 0, "saturated Young's modulus"),
-        real_field("CE", 80, Dimension::None, kNonNegative, 0, "Young's modulus evolution parameter"),
+        real_field("Fscale_p", 10, Dimension::Stress, kAny, 0, "scale of fct_IDp"),
+        fct("fct_IDE", 30, "Young's modulus scale vs plastic strain"),
+        real_field("Einf", 40, Dimension::Stress, kNonNegative, 0, "saturated Young's modulus"),
+        real_field("CE", 60, Dimension::None, kNonNegative, 0, "Young's modulus evolution parameter"),
     }, true));
     k.lines.push_back(line("yield curves", {
         fct("fct_ID1", 0, "yield curve 1"), fct("fct_ID2", 10, "yield curve 2"),
