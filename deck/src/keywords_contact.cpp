@@ -54,7 +54,8 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
     }, true));
     k.lines.push_back(line("options", {
         int_field("Ioptoff", 0, -1, 1, 0, "domain decomposition flag"),
-        int_field("Ifail", 10, 0, 0, 0, "failure flag (0: no failure, no extra line)"),
+        int_field("Iexpams", 10, 0, 2, 0, "mass scaling of the secondary nodes flag"),
+        int_field("Ifail", 20, 0, 0, 0, "failure flag (0: no failure, no extra line)"),
     }, true));
     out.push_back(std::move(k));
   }
