@@ -135,17 +135,30 @@ private:
                                              run_dir_.string() + "; CSV files there:" + files);
     }
     std::vector<std::pair<const TimeHistoryTable*, long>> hits;
+    std::vector<const TimeHistoryTable*> searched;
+    std::string skipped;
     for (const auto& f : candidates) {
-      const TimeHistoryTable& t = table(f);
-      const long c = find_column(t, s.column);
-      if (c >= 0 && static_cast<std::size_t>(c) != t.time_column) hits.emplace_back(&t, c);
+      const TimeHistoryTable* t = nullptr;
+      if (s.file.empty()) {
+        // searching the whole folder: a CSV that is not a time history (no time column,
+        // other data) is passed over, and named if the column is not found elsewhere
+        try {
+          t = &table(f);
+        } catch (const InputError& e) {
+          skipped += std::string("\n  skipped (not a readable time history): ") + e.what();
+          continue;
+        }
+      } else {
+        t = &table(f);
+      }
+      searched.push_back(t);
+      const long c = find_column(*t, s.column);
+      if (c >= 0 && static_cast<std::size_t>(c) != t->time_column) hits.emplace_back(t, c);
     }
     if (hits.empty()) {
       std::string avail;
-      for (const auto& f : candidates) {
-        const TimeHistoryTable& t = table(f);
-        avail += "\n " + t.path + ":" + list_columns(t);
-      }
+      for (const TimeHistoryTable* t : searched) avail += "\n " + t->path + ":" + list_columns(*t);
+      avail += skipped;
       throw InputError(cd_.path, s.line, "signal '" + s.name + "': column '" + s.column +
                                              "' not found (exact header, name or unique substring); available columns:" + avail);
     }
