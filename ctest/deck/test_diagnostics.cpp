@@ -287,3 +287,19 @@ TEST(DeckDiagnostics, CheckDeckOnBuiltDecks) {
   EXPECT_THROW(CardBuilder(d, "/MAT/LAW1", 1).set(1, "Young", 1.0), std::out_of_range);
   EXPECT_THROW(CardBuilder(d, "/NODE").row_set(0, "X", 1.0), std::out_of_range);
 }
+
+TEST(DeckDiagnostics, BeginUnits) {
+  const std::string ok = "/BEGIN\nu\n      2024\n                  Mg                  mm                 mus\n"
+                         "                  kg                   m                   s\n/END\n";
+  const ReadResult a = read_deck_text(ok, "u.rad", Section::Starter);
+  ASSERT_TRUE(a.ok()) << dump(a);
+  EXPECT_EQ(a.deck.input_units.mass, "Mg");
+  EXPECT_EQ(a.deck.input_units.time, "mus");
+  EXPECT_EQ(a.deck.work_units.length, "m");
+  const std::string bad = "/BEGIN\nu\n      2024\n                  lb                  mm                  ms\n"
+                          "                  kg                  mm                  ms\n/END\n";
+  const ReadResult b = read_deck_text(bad, "u.rad", Section::Starter);
+  ASSERT_EQ(b.diagnostics.size(), 1u) << dump(b);
+  EXPECT_EQ(format(b.diagnostics[0], b.deck),
+            "u.rad:4:1: error: /BEGIN field mass = 'lb': unknown unit (an SI prefix and g, e.g. kg, g, Mg)");
+}

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 namespace hbm::deck::detail {
 
@@ -542,29 +543,31 @@ class Checker {
     }
   }
 
+  // Radioss unit names: an SI prefix (y z a f p n mu m c d da h k M G T P E Z Y, or none)
+  // followed by g (mass), m (length) or s (time), as in the reference guide's /BEGIN.
+  static bool unit_ok(std::string_view t, char base) {
+    if (t.empty() || t.back() != base) return false;
+    const std::string_view prefix = t.substr(0, t.size() - 1);
+    static constexpr std::string_view prefixes[] = {"",  "y", "z", "a", "f", "p", "n", "mu", "m", "c", "d",
+                                                    "da", "h", "k", "M", "G", "T", "P", "E",  "Z", "Y"};
+    for (std::string_view p : prefixes)
+      if (prefix == p) return true;
+    return false;
+  }
+
   void units(const Card& c) {
-    static constexpr std::string_view mass[] = {"kg", "g", "mg", "Mg", "t", "lb"};
-    static constexpr std::string_view length[] = {"mm", "m", "cm", "km", "in", "ft"};
-    static constexpr std::string_view time[] = {"ms", "s", "us", "mus", "h"};
     for (std::size_t line = 1; line <= 2; ++line) {
       const Row& r = c.lines[line];
-      auto check = [&](std::string_view field, auto const& allowed) {
+      if (r.has_error) continue;
+      for (auto [field, base, example] : {std::tuple{"mass", 'g', "kg, g, Mg"}, std::tuple{"length", 'm', "mm, m"},
+                                          std::tuple{"time", 's', "ms, s, mus"}}) {
         const Value& v = c.value(r, field);
-        if (v.blank) return;
-        const std::string_view t = deck_.text(v);
-        for (std::string_view a : allowed)
-          if (t == a) return;
+        if (v.blank || unit_ok(deck_.text(v), base)) continue;
         const FieldSpec& fs = r.layout->fields[static_cast<std::size_t>(field_index(*r.layout, field))];
-        std::string list;
-        for (std::string_view a : allowed) {
-          if (!list.empty()) list.push_back(' ');
-          list.append(a);
-        }
-        sink_.error(r.loc.line ? r.loc : c.loc, col_of(fs), field_prefix(c, fs, v, deck_) + "unknown unit (one of: " + list + ")");
-      };
-      check("mass", mass);
-      check("length", length);
-      check("time", time);
+        sink_.error(r.loc.line ? r.loc : c.loc, col_of(fs),
+                    field_prefix(c, fs, v, deck_) + "unknown unit (an SI prefix and " + std::string(1, base) +
+                        ", e.g. " + example + ")");
+      }
     }
   }
 };
