@@ -14,7 +14,7 @@ struct UnitEntry {
   double to_si;
 };
 
-constexpr std::array<UnitEntry, 39> unit_table{{
+constexpr std::array<UnitEntry, 41> unit_table{{
     {"s", "time", 1.0},
     {"ms", "time", 1e-3},
     {"us", "time", 1e-6},
@@ -35,6 +35,7 @@ constexpr std::array<UnitEntry, 39> unit_table{{
     {"mm/ms2", "acceleration", 1e3},
     {"mm/ms^2", "acceleration", 1e3},
     {"mm/s2", "acceleration", 1e-3},
+    {"mm/s^2", "acceleration", 1e-3},
     {"g", "acceleration", standard_gravity},
     {"N*m", "moment", 1.0},
     {"Nm", "moment", 1.0},
@@ -46,6 +47,7 @@ constexpr std::array<UnitEntry, 39> unit_table{{
     {"mJ", "energy", 1e-3},
     {"kg", "mass", 1.0},
     {"t", "mass", 1e3},
+    {"Mg", "mass", 1e3},
     {"g_mass", "mass", 1e-3},
     {"rad", "angle", 1.0},
     {"deg", "angle", 3.14159265358979323846 / 180.0},

@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
   std::ofstream imp(fs::path(out_dir) / "impactor.csv"), nod(fs::path(out_dir) / "nodes.csv"),
       glo(fs::path(out_dir) / "global.csv");
   imp << "time [ms],rbody 900 impactor D" << axis << " [mm],rbody 900 impactor V" << axis << " [mm/ms],rbody 900 impactor A"
-      << axis << " [mm/ms2],contact 5 impactor-thorax F" << axis << " [kN]\n";
+      << axis << " [mm/ms^2],contact 5 impactor-thorax F" << axis << " [kN]\n";
   nod << "time [ms],node 3208 T8 D" << axis << " [mm],node 1201 sternum D" << axis << " [mm]\n";
   glo << "time [ms],kinetic energy [J],internal energy [J],damping energy [J],energy error [-]\n";
   const double mt = hm.m + hm.big_m, vc = hm.m * hm.v0 / mt;
