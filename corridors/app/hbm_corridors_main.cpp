@@ -3,7 +3,8 @@
 // report.  hbm-corridors --case FILE --th RUN_DIR --out REPORT_DIR
 // Exit status: 0 success, 1 bad input (message FILE:LINE: error: ...), 2 other failure
 // (e.g. gnuplot missing). The report is written into a temporary sibling folder that is
-// renamed to REPORT_DIR only when complete, so a failed run leaves no partial report.
+// renamed to REPORT_DIR only when complete, so a failed run leaves no partial report. An
+// existing REPORT_DIR is replaced only when it is empty or holds an earlier report.
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -26,16 +27,26 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_option("--case", case_file, "case definition (TOML, see docs/corridors.md)")->required();
   app.add_option("--th", run_dir, "run folder holding the time-history CSV files")->required();
-  app.add_option("--out", out_dir, "report folder to write (replaced when it exists)")->required();
+  app.add_option("--out", out_dir, "report folder to write (an earlier report there is replaced)")->required();
   app.add_option("--gnuplot", gnuplot, "gnuplot executable");
   app.add_flag("--quiet", quiet, "print nothing on success");
   CLI11_PARSE(app, argc, argv);
 
   fs::path tmp;
   try {
+    fs::path out = fs::absolute(out_dir).lexically_normal();
+    if (out.has_parent_path() && out.filename().empty()) out = out.parent_path();  // trailing '/'
+    // an existing REPORT_DIR is replaced only when it is empty or an earlier report
+    if (fs::exists(out)) {
+      const bool is_report = fs::is_directory(out) &&
+                             (fs::is_empty(out) || (fs::exists(out / "summary.json") && fs::exists(out / "report.html")));
+      if (!is_report)
+        throw InputError(out.string(), 0,
+                         "--out exists and is not an hbm-corridors report folder (no summary.json and report.html); "
+                         "refusing to replace it");
+    }
     const CaseDefinition cd = load_case(case_file);
     const EvaluationResult result = evaluate_case(cd, run_dir);
-    const fs::path out = fs::absolute(out_dir).lexically_normal();
     const fs::path parent = out.parent_path();
     fs::create_directories(parent);
     tmp = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));

@@ -11,7 +11,9 @@
 //  - a run rated unfiltered against a corridor built from its own closed-form curve scores
 //    R > 0.95 and lies inside that corridor (> 95 % of its points);
 //  - a malformed case file exits 1 with FILE:LINE and creates no report folder; a missing
-//    column exits 1, lists the available columns and creates no report folder.
+//    column exits 1, lists the available columns and creates no report folder;
+//  - a --out folder that is not an earlier report is left alone (exit 1); an earlier
+//    report is replaced as a whole.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -174,6 +176,8 @@ protected:
       text.replace(p, rel.size(), "\"" + std::string(HBM_CORRIDORS_SOURCE_DIR) + "/data/");
     return text;
   }
+  /// The shipped Lebarbe 6.7 m/s case.
+  static std::string case_text_path() { return case_file("lebarbe2012_hub_6p7.toml"); }
   static std::string cli(const std::string& case_path, const fs::path& out) {
     return std::string("'") + HBM_CORRIDORS_EXE + "' --case '" + case_path + "' --th '" + (work / "run").string() +
            "' --out '" + out.string() + "'";
@@ -287,4 +291,21 @@ TEST_F(CorridorsCli, MissingColumnListsAvailableColumns) {
   EXPECT_NE(log.find("'T12 DX' not found"), std::string::npos) << log;
   EXPECT_NE(log.find("node 3208 T8 DX [mm]"), std::string::npos) << log;  // listed as available
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CorridorsCli, RefusesToReplaceAFolderThatIsNotAReport) {
+  const fs::path out = work / "not_a_report";
+  fs::create_directories(out);
+  std::ofstream(out / "keep.txt") << "user data\n";
+  std::string log;
+  EXPECT_EQ(run(cli(case_text_path(), out), &log), 1) << log;
+  EXPECT_NE(log.find("refusing to replace it"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(out / "keep.txt"));
+  // an earlier report is replaced
+  const fs::path rep = work / "report";
+  ASSERT_EQ(run(cli(case_text_path(), rep), &log), 0) << log;
+  std::ofstream(rep / "stale.txt") << "from an earlier run\n";
+  ASSERT_EQ(run(cli(case_text_path(), rep), &log), 0) << log;
+  EXPECT_FALSE(fs::exists(rep / "stale.txt"));
+  EXPECT_TRUE(fs::exists(rep / "summary.json"));
 }
