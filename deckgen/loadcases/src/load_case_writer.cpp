@@ -296,6 +296,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   CardBuilder(d, "/INTER/TYPE7", obj + 1, "impactor to skin")
       .set_int(0, "grnod_id", obj + 4).set_int(0, "surf_id", obj + 1)
       .set(3, "Stfac", 1.0).set(3, "Fric", spec.friction).set(3, "Gapmin", spec.contact_gap_mm)
+      .set(4, "VISs", spec.contact_damping)
       .commit();
   {
     CardBuilder t(d, "/TH/NODE", obj + 1, "impactor and landmarks");
@@ -330,7 +331,8 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
        << "# Contact /INTER/TYPE7/" << obj + 1 << ": nodes of the parts " ;
   for (std::size_t i = 0; i < contact_parts.size(); ++i)
     head << (i ? ", " : "") << model.part_titles.at(contact_parts[i]);
-  head << " on the impactor face (friction " << fmt(spec.friction, 2) << ").\n"
+  head << " on the impactor face (friction " << fmt(spec.friction, 2)
+       << ", critical damping VISs " << fmt(spec.contact_damping, 2) << ").\n"
        << "# Subject free (no seat, no back support, no gravity: the event lasts " << fmt(spec.tstop_ms, 0) << " ms).\n"
        << "# Time histories: /TH/NODE/" << obj + 1 << " (impactor main node, " << spec.spine_level << " node "
        << g.spine_node << ", sternum node " << g.sternum_node << "), /TH/RBODY/" << obj + 2 << ", /TH/INTER/" << obj + 3

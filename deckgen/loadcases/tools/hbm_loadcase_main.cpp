@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   std::string model = "decks/hbm50/hbm50.inc", geometry = "geometry", decks_dir = "decks", out;
   std::vector<std::string> cases;
   double speed = 0, tstop = 0;
-  bool list = false;
+  bool list = false, print_corridor = false;
   app.add_option("--model", model, "body model deck (included by the load-case decks)");
   app.add_option("--geometry", geometry, "geometry sources (spine and pelvis landmarks)");
   app.add_option("--case", cases, "case name(s), or 'all' (see --list)");
@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   app.add_option("--speed", speed, "impactor speed in m/s (overrides the case's; single case only)")->check(CLI::PositiveNumber);
   app.add_option("--tstop", tstop, "end time in ms (default 60)")->check(CLI::PositiveNumber);
   app.add_flag("--list", list, "list the cases and exit");
+  app.add_flag("--print-corridor-case", print_corridor,
+               "print the hbm-corridors case file of each --case (path from the repository root) and exit");
   CLI11_PARSE(app, argc, argv);
   if (list) {
     for (const auto& c : catalogue())
@@ -52,6 +54,10 @@ int main(int argc, char** argv) {
     specs.push_back(*s);
     if (speed > 0) specs.back().speed_m_s = speed;
     if (tstop > 0) specs.back().tstop_ms = tstop;
+  }
+  if (print_corridor) {
+    for (const auto& s : specs) std::cout << s.corridor_case << "\n";
+    return 0;
   }
   try {
     const ModelView m = read_model(model);
