@@ -106,8 +106,10 @@ void RigidBody::initialise(const NodalState& nodes, NodalState& out) {
   const Eigen::Vector3d w = angular_velocity(Q, L, principal.cwiseInverse());
   store(out.omega, main, w);
   (void)m;
-  velocity_ = vc;
-  omega_ = w;
+  velocity_ = velocity_prev_ = vc;
+  omega_ = omega_prev_ = w;
+  L_prev_ = L;
+  kinetic_prev_ = 0.5 * mass * vc.squaredNorm() + rotational_energy(Q, L, principal.cwiseInverse());
   initialised_ = true;
 }
 
@@ -142,6 +144,12 @@ void RigidBody::gather_forces(const StepContext& step, NodalState& nodes) {
 void RigidBody::impose_velocities(const StepContext& step, NodalState& nodes) {
   const auto mi = static_cast<std::size_t>(main);
   const double dt_n = 0.5 * (step.dt_prev + step.dt_next);
+  if (step.cycle > 0) {  // half-step history for the values at t^n
+    L_prev_ = L;
+    velocity_prev_ = velocity_;
+    omega_prev_ = omega_;
+    kinetic_prev_ = kinetic_energy();
+  }
   L += dt_n * load(nodes.moment, main);  // kick with the torque at t^n
   // Rotational mass scaling on the smallest principal moment (the core's check on the
   // scalar inertia is then never stricter).
@@ -222,16 +230,16 @@ std::optional<ThProbe> RigidBody::th_probe(ThKind kind, std::int64_t oid,
       switch (which) {
         case 0: return force_(comp);
         case 1: return moment_(comp);
-        case 2: return velocity_(comp);
-        case 3: return omega_(comp);
-        default: return L(comp);
+        case 2: return velocity_at_n()(comp);
+        case 3: return omega_at_n()(comp);
+        default: return momentum_at_n()(comp);
       }
     };
     return p;
   }
   if (variable == "KE") {
     p.unit = Dimension::Energy;
-    p.read = [this] { return kinetic_energy(); };
+    p.read = [this] { return kinetic_energy_at_n(); };
     return p;
   }
   return std::nullopt;

@@ -21,10 +21,12 @@
 //      omega in stage 2, the rotation follows that omega (exponential map) instead.
 // Kick-drift with an exact free flow is a symplectic, momentum-conserving integrator:
 // a free tumbling body keeps L to round-off and its energy without drift.
-// /TH/RBODY variables: FX FY FZ MX MY MZ (resultant force and moment about the centre
-// at t^n, global axes; the Radioss default set), and VX VY VZ, WX WY WZ (velocity of the
-// centre and angular velocity, half step), AMX AMY AMZ (angular momentum about the
-// centre), KE (kinetic energy, translation + rotation).
+// /TH/RBODY variables, all at the output time t^n: FX FY FZ MX MY MZ (resultant force and
+// moment about the centre, global axes; the Radioss default set), and VX VY VZ, WX WY WZ
+// (velocity of the centre, angular velocity), AMX AMY AMZ (angular momentum about the
+// centre), KE (kinetic energy, translation + rotation); velocities and momenta at t^n
+// are the means of the half-step values (as the engine's node velocities and kinetic
+// energy), so that sum x^n x m v^n + AM is the exact invariant of the scheme.
 #pragma once
 
 #include "hbm/solver/constraint.hpp"
@@ -73,9 +75,14 @@ class RigidBody final : public Constraint {
   // Current diagnostics (also what the probes read).
   Eigen::Vector3d force() const { return force_; }
   Eigen::Vector3d moment() const { return moment_; }
-  Eigen::Vector3d velocity() const { return velocity_; }
-  Eigen::Vector3d omega() const { return omega_; }
-  double kinetic_energy() const;
+  Eigen::Vector3d velocity() const { return velocity_; }  // v^{n+1/2} of the centre
+  Eigen::Vector3d omega() const { return omega_; }        // omega^{n+1/2}
+  double kinetic_energy() const;                          // at the half step n+1/2
+  // Values at t^n (means of the half steps n-1/2, n+1/2), what /TH/RBODY writes.
+  Eigen::Vector3d velocity_at_n() const { return 0.5 * (velocity_prev_ + velocity_); }
+  Eigen::Vector3d omega_at_n() const { return 0.5 * (omega_prev_ + omega_); }
+  Eigen::Vector3d momentum_at_n() const { return 0.5 * (L_prev_ + L); }
+  double kinetic_energy_at_n() const { return 0.5 * (kinetic_prev_ + kinetic_energy()); }
   Eigen::Vector3d inverse_inertia() const { return (principal.array() + added_inertia).inverse().matrix(); }
 
  private:
@@ -85,6 +92,9 @@ class RigidBody final : public Constraint {
   Eigen::Vector3d omega_written_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_ = Eigen::Vector3d::Zero(), moment_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero(), omega_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_prev_ = Eigen::Vector3d::Zero(), omega_prev_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d L_prev_ = Eigen::Vector3d::Zero();
+  double kinetic_prev_ = 0;
   double mass_used_ = 0;
   Eigen::Vector3d inv_inertia_used_ = Eigen::Vector3d::Ones();
   std::int64_t steps_since_orthonormalize_ = 0;
