@@ -4,11 +4,13 @@
 // LAW36, plane stress), section from /PROP/TYPE1:
 //   line 1  Ishell (0-4: Belytschko-Tsay; others are refused), Ish3n (0, 1, 2, 30, 31:
 //           CST+DKT), Idrill (0; 1 accepted with a warning: no drilling stiffness),
+//           Ipinch (0 only),
 //           P_thick_fail (fraction of the N points that must fail to delete the shell;
 //           0 = all points),
 //   line 2  Hm Hf Hr (hourglass, 0 -> 0.01 as Radioss), Dm Dn (must be 0),
 //   line 3  N (0 -> 5; 1 = membrane), Thick, Ashear (0 -> 5/6), Ithick (1: thickness
-//           follows the membrane strain), Iplas (plane-stress return is always iterative).
+//           follows the membrane strain), Iplas (plane-stress return is always iterative),
+//           Ipos (0 only: mid-surface).
 // Thickness per element: the element row's thick if > 0, else the /PART thick if > 0,
 // else the property's. Lumped mass rho t A / npe and rotational inertia
 // m (t^2 + A) / 12 per node; shell nodes carry rotational DOFs.
@@ -137,6 +139,14 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
                 "Ish3n = " + std::to_string(ish3n) + " not supported (0, 1, 2, 30, 31: CST + DKT)");
       return false;
     }
+  }
+  if (p->integer(0, "Ipinch") != 0) {
+    ctx.error(*p, p->lines.at(0), "Ipinch", "pinching DOF (Ipinch = 1) is not supported");
+    return false;
+  }
+  if (p->integer(2, "Ipos") != 0) {
+    ctx.error(*p, p->lines.at(2), "Ipos", "only mid-surface shells (Ipos = 0) are supported");
+    return false;
   }
   if (p->integer(0, "Idrill") != 0)
     ctx.warning(*p, "Idrill != 0: shells carry no drilling stiffness (Idrill = 0 behaviour)");

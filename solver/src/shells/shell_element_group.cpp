@@ -63,7 +63,7 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
   const std::size_t nch = chunk_totals_.size();
   const std::size_t npe = nodes_per_element;
   const bool quad = data.kind == ShellKind::QuadBT;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nch > 1)
   for (std::size_t ch = 0; ch < nch; ++ch) {
     const std::size_t e0 = ch * kChunk, e1 = std::min(n_elements, e0 + kChunk);
     chunk_totals_[ch] = quad ? quad_bt_forces(data, nv, out, dt, e0, e1)
