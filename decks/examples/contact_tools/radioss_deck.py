@@ -45,8 +45,8 @@ class Starter:
     def part(self, pid, title, prop, mat, thick=0.0):
         self.card(f"/PART/{pid}", title, [i10(prop) + i10(mat) + i10(0) + f20(thick)])
 
-    def prop_solid(self, pid, title, isolid=0, h=0.1):
-        self.card(f"/PROP/TYPE14/{pid}", title, [i10(isolid), f20(1.1) + f20(0.05) + f20(h)])
+    def prop_solid(self, pid, title, isolid=0, h=0.1, qa=1.1, qb=0.05):
+        self.card(f"/PROP/TYPE14/{pid}", title, [i10(isolid), f20(qa) + f20(qb) + f20(h)])
 
     def prop_shell(self, pid, title, thick, n=5):
         self.card(f"/PROP/TYPE1/{pid}", title, [i10(24), f20(0.01) + f20(0.01) + f20(0.01),

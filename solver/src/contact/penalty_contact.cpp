@@ -297,8 +297,10 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
       if (surf_.one_sided[su]) {
         const double side = dot(d, pr.normal);
         if (side < 0) {
-          // Past the face: only a node over the face's interior, not too deep, counts.
-          if (!pr.interior || pr.distance > surf_.depth[su]) continue;
+          // Past the face: only a node right under the face (its closest point is its
+          // projection along the normal, edges and corners included), not too deep.
+          if (pr.distance > surf_.depth[su] || side * side < (1.0 - 1e-9) * pr.distance * pr.distance)
+            continue;
           signed_d = -pr.distance;
           n = pr.normal;
         } else {

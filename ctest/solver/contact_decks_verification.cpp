@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Deck-level verification of the contact area: runs hbm-solver on the decks in
+// decks/examples/contact_*/ and checks their time histories against analytic values.
+//  - contact_blocks_collide: X momentum conserved to the CSV precision (1e-9 relative)
+//    at every output; energy balance within 1% at every output; contact energy back to
+//    < 1e-3 E0 once the blocks separated.
+//  - contact_sphere_rwall: peak wall force within 10% of Hertz, rebound speed >= 0.9 V0
+//    (elastic: e = 1 minus the energy left in the sphere's vibrations).
+//  - contact_block_slide: deceleration mu g within 2% for TYPE7 friction and for the
+//    RWALL with Slide = 2; tangential / normal wall force = mu (0.1%: a node whose
+//    tangential velocity stops within a step takes less than mu dv_n).
+//  - contact_tied_bar: reflection at the TYPE2 interface < 2% of the incident pulse,
+//    transmitted amplitude within 3% of the control bar's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  int col(const std::string& part) const {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i].find(part) != std::string::npos) return static_cast<int>(i);
+    ADD_FAILURE() << "no column containing '" << part << "'";
+    return 0;
+  }
+  std::vector<double> column(int c) const {
+    std::vector<double> v;
+    for (const auto& r : rows) v.push_back(r[static_cast<std::size_t>(c)]);
+    return v;
+  }
+};
+
+Csv read_csv(const fs::path& p) {
+  Csv c;
+  std::ifstream in(p);
+  EXPECT_TRUE(in.good()) << p;
+  std::string line;
+  if (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string f;
+    while (std::getline(ss, f, ',')) c.header.push_back(f);
+  }
+  while (std::getline(in, line)) {
+    std::vector<double> r;
+    std::stringstream ss(line);
+    std::string f;
+    while (std::getline(ss, f, ',')) r.push_back(std::strtod(f.c_str(), nullptr));
+    if (r.size() == c.header.size()) c.rows.push_back(r);
+  }
+  return c;
+}
+
+// Copies the case's decks into ./<name>/ and runs hbm-solver there; returns the exit code.
+int run_case(const std::string& name) {
+#ifndef HBM_SOLVER_EXE
+  return -1;
+#else
+  const fs::path src = fs::path(HBM_SOURCE_DIR) / "decks" / "examples" / name;
+  const fs::path dir = fs::current_path() / name;
+  fs::create_directories(dir);
+  for (const char* suffix : {"_0000.rad", "_0001.rad"})
+    fs::copy_file(src / (name + suffix), dir / (name + suffix), fs::copy_options::overwrite_existing);
+  const std::string cmd = "cd '" + dir.string() + "' && '" + HBM_SOLVER_EXE + "' " + name +
+                          "_0000.rad > run.log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  return rc == 0 ? 0 : (rc > 255 ? rc >> 8 : rc);
+#endif
+}
+
+// Lumped nodal masses of an n x n x n block of bricks of element mass me, in the node
+// order of decks/examples/contact_tools/radioss_deck.py block_mesh (i fastest).
+std::vector<double> block_masses(int nx, int ny, int nz, double me) {
+  std::vector<double> m;
+  auto c = [](int a, int n) { return (a == 0 || a == n) ? 1 : 2; };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) m.push_back(c(i, nx) * c(j, ny) * c(k, nz) * me / 8.0);
+  return m;
+}
+
+#define REQUIRE_SOLVER()                                  \
+  do {                                                    \
+    if (run_case_skip()) GTEST_SKIP() << "no hbm-solver"; \
+  } while (0)
+bool run_case_skip() {
+#ifdef HBM_SOLVER_EXE
+  return false;
+#else
+  return true;
+#endif
+}
+
+}  // namespace
+
+TEST(ContactDecks, BlocksCollideConserveMomentumAndEnergy) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_blocks_collide";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const Csv nodes = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const Csv inter = read_csv(fs::path(name) / (name + "_TH_INTER_1.csv"));
+  const double h = 10.0 / 6, me = 1e-6 * h * h * h, v0 = 5.0, m_block = 1e-3;
+  std::vector<double> m = block_masses(6, 6, 6, me);
+  const std::vector<double> mb = m;
+  m.insert(m.end(), mb.begin(), mb.end());
+  const double p0 = m_block * v0, e0 = 0.5 * m_block * v0 * v0;
+  ASSERT_EQ(nodes.header.size(), 9 + m.size());
+  for (const auto& r : nodes.rows) {
+    double p = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) p += m[i] * r[9 + i];
+    EXPECT_NEAR(p, p0, 1e-9 * p0) << "t = " << r[0];
+  }
+  const int err = inter.col("energy error"), ec = inter.col("contact energy");
+  for (const auto& r : inter.rows) EXPECT_LT(std::abs(r[static_cast<std::size_t>(err)]), 0.01) << "t = " << r[0];
+  const auto& last = inter.rows.back();
+  EXPECT_LT(std::abs(last[static_cast<std::size_t>(ec)]), 1e-3 * e0);
+  EXPECT_EQ(last[static_cast<std::size_t>(inter.col("inter 1 A nodes on B FNX"))], 0.0);
+}
+
+TEST(ContactDecks, SphereOnRigidWallMatchesHertz) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_sphere_rwall";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  // Hertz, sphere on a rigid plane (Johnson 1985 §11.4); values of make_deck.py.
+  const double R = 10, rho = 1e-6, E = 0.01, nu = 0.3, v0 = 1.0;
+  const double estar = E / (1 - nu * nu), mass = rho * 4.0 / 3.0 * M_PI * R * R * R;
+  const double dmax = std::pow(15 * mass * v0 * v0 / (16 * estar * std::sqrt(R)), 0.4);
+  const double fmax = 4.0 / 3.0 * estar * std::sqrt(R) * std::pow(dmax, 1.5);
+  const Csv wall = read_csv(fs::path(name) / (name + "_TH_RWALL_1.csv"));
+  const std::vector<double> t = wall.column(0), fz = wall.column(wall.col("FNZ"));
+  double peak = 0, t_end = 0;
+  for (std::size_t k = 0; k < fz.size(); ++k) {
+    peak = std::max(peak, std::abs(fz[k]));
+    if (std::abs(fz[k]) > 1e-9) t_end = t[k];
+  }
+  EXPECT_NEAR(peak, fmax, 0.10 * fmax) << "Hertz F_max " << fmax << " kN";
+  EXPECT_GT(t_end, 0.0);
+  EXPECT_LT(t_end, t.back() - 0.1) << "the sphere must have left the wall";
+  const Csv centre = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const std::vector<double> tc = centre.column(0), vz = centre.column(centre.col("VZ"));
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < vz.size(); ++k)
+    if (tc[k] > t_end + 0.05) sum += vz[k], ++n;
+  ASSERT_GT(n, 10);
+  const double rebound = sum / n;
+  EXPECT_GT(rebound, 0.9 * v0);
+  EXPECT_LT(rebound, 1.0 * v0 + 1e-3);
+  const int err = wall.col("energy error");
+  EXPECT_LT(std::abs(wall.rows.back()[static_cast<std::size_t>(err)]), 0.02);
+}
+
+namespace {
+// Mass-weighted mean X velocity of a 2x2x2 block (27 nodes) whose VX columns start at c0.
+std::vector<double> block_vx(const Csv& c, const std::vector<int>& cols) {
+  const std::vector<double> w = block_masses(2, 2, 2, 1.0);
+  std::vector<double> v;
+  double ws = 0;
+  for (double x : w) ws += x;
+  for (const auto& r : c.rows) {
+    double s = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) s += w[i] * r[static_cast<std::size_t>(cols[i])];
+    v.push_back(s / ws);
+  }
+  return v;
+}
+double slope(const std::vector<double>& t, const std::vector<double>& v, double t0, double t1) {
+  double st = 0, sv = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= t0 && t[k] <= t1) st += t[k], sv += v[k], ++n;
+  const double mt = st / n, mv = sv / n;
+  double num = 0, den = 0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= t0 && t[k] <= t1) num += (t[k] - mt) * (v[k] - mv), den += (t[k] - mt) * (t[k] - mt);
+  return num / den;
+}
+}  // namespace
+
+TEST(ContactDecks, BlockSlidingDeceleratesAtMuG) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_block_slide";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const double mu = 0.3, g = 1.0;
+  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_3.csv"));
+  std::vector<int> vx;
+  for (std::size_t i = 9; i < c.header.size(); ++i)
+    if (c.header[i].find(" VX ") != std::string::npos) vx.push_back(static_cast<int>(i));
+  ASSERT_EQ(vx.size(), 54u);
+  const std::vector<double> t = c.column(0);
+  const std::vector<int> b2(vx.begin(), vx.begin() + 27), b3(vx.begin() + 27, vx.end());
+  // Fit over 0.1-0.8 ms, after the settling bounce and before the stop at 1 ms.
+  EXPECT_NEAR(-slope(t, block_vx(c, b2), 0.1, 0.8), mu * g, 0.02 * mu * g) << "TYPE7 friction";
+  EXPECT_NEAR(-slope(t, block_vx(c, b3), 0.1, 0.8), mu * g, 0.02 * mu * g) << "RWALL friction";
+  // Wall: tangential / normal force = mu while sliding (force on the wall).
+  const Csv w = read_csv(fs::path(name) / (name + "_TH_RWALL_2.csv"));
+  const std::vector<double> tw = w.column(0), fn = w.column(w.col("FNZ")), ft = w.column(w.col("FTX"));
+  for (std::size_t k = 0; k < tw.size(); ++k)
+    if (tw[k] > 0.1 && tw[k] < 0.8 && std::abs(fn[k]) > 0) EXPECT_NEAR(ft[k] / std::abs(fn[k]), mu, 1e-3 * mu);
+}
+
+TEST(ContactDecks, TiedBarTransmitsTheWave) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_tied_bar";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const std::vector<double> t = c.column(0), b50 = c.column(c.col("bar1 x50")),
+                            b150 = c.column(c.col("bar1 x150")), c50 = c.column(c.col("control x50")),
+                            c150 = c.column(c.col("control x150"));
+  double inc = 0, refl = 0, tr = 0, trc = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t[k] < 0.12) inc = std::max(inc, std::abs(c50[k]));
+    // The interface reflection reaches x = 50 at t = 150/c = 0.15 ms (+ pulse 0.05 ms).
+    if (t[k] >= 0.13 && t[k] <= 0.25) refl = std::max(refl, std::abs(b50[k] - c50[k]));
+    tr = std::max(tr, std::abs(b150[k]));
+    trc = std::max(trc, std::abs(c150[k]));
+  }
+  EXPECT_NEAR(inc, 1.0, 0.05);  // imposed amplitude 1 mm/ms, element dispersion
+  EXPECT_LT(refl, 0.02 * inc);
+  EXPECT_NEAR(tr, trc, 0.03 * trc);
+}
