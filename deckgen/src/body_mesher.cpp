@@ -261,14 +261,23 @@ void Builder::build_torso() {
   std::vector<LayerInfo> layers{{LayerKind::Flesh, "", "pelvis"}, {LayerKind::Flesh, "", "pelvis"},
                                 {LayerKind::Sacrum, "S1", "pelvis"}, {LayerKind::Sacrum, "S1", "pelvis"},
                                 {LayerKind::Sacrum, "S1", "pelvis"}};
+  // Mass-property regions follow the Zatsiorsky trunk segmentation at vertebral levels:
+  // thorax (upper trunk) down to the xiphisternal joint (T9 lower plate), abdomen (middle
+  // trunk) down to the omphalion (L3 lower plate), pelvis (lower trunk) below (Gray's
+  // Anatomy surface landmarks: xiphisternal joint T9, umbilicus L3-L4).
   std::string below = "S1";
+  bool past_l3 = false, past_t9 = false;  // walking upwards
   for (int i = static_cast<int>(g_.spine.size()) - 2; i >= 0; --i) {
     const auto& v = g_.spine[static_cast<std::size_t>(i)];
     if (v.name[0] == 'C') break;
     bool lumbar = v.name[0] == 'L';
-    std::string region = lumbar ? "abdomen" : "thorax";
-    std::string disc_region = v.name == "L5" ? "pelvis" : v.name == "T12" ? "abdomen" : region;
     double r = lumbar ? 20 : 15;
+    std::string disc_region = !past_l3 ? "pelvis" : !past_t9 ? "abdomen" : "thorax";
+    if (v.name == "L3") past_l3 = true;
+    if (v.name == "T9") past_t9 = true;
+    std::string region = !past_l3 ? "pelvis" : !past_t9 ? "abdomen" : "thorax";
+    if (v.name == "L3") region = "abdomen";
+    if (v.name == "T9") region = "thorax";
     add(v.name + "_lower", v.lower.x(), v.lower.y(), v.name, r);
     layers.push_back({LayerKind::Disc, v.name + below, disc_region});
     add(v.name + "_upper", v.upper.x(), v.upper.y(), v.name, r);
@@ -290,16 +299,22 @@ void Builder::build_torso() {
 
   const int N = torso_->n(), m = torso_->m();
   const int vert_mat = material("vertebra");
-  std::map<std::string, int> organ, flesh, skin, skin_tri;
+  std::map<std::string, int> flesh, skin, skin_tri;
   const auto& skin_sec = g_.shell_sections.at("skin");
   for (const char* region : {"thorax", "abdomen", "pelvis"}) {
     std::string r = region;
-    int om = material(r == "thorax" ? "thoracic_organs" : "abdominal_organs");
-    organ[r] = part(r == "thorax" ? "thoracic_organs" : r == "abdomen" ? "abdominal_organs" : "pelvic_organs", ElementKind::Brick, om, r, "organs");
     flesh[r] = part("flesh_" + r, ElementKind::Brick, material("flesh"), r, "flesh");
     skin[r] = part("skin_" + r, ElementKind::Shell, material("skin"), r, "skin", skin_sec.total_thickness);
     skin_tri[r] = part("skin_" + r + "_tria", ElementKind::Tria, material("skin"), r, "skin", skin_sec.total_thickness);
   }
+  // Organ sets: thoracic inside the rib cage (T1-T12 layers), abdominal below; one part per
+  // (set, mass region).
+  auto organ_part = [&](const LayerInfo& L) {
+    bool thoracic = L.vertebra.size() > 1 && L.vertebra[0] == 'T';
+    std::string set = thoracic ? "thoracic_organs" : "abdominal_organs";
+    std::string name = set + (L.region == (thoracic ? "thorax" : "abdomen") ? "" : "_" + L.region);
+    return part(name, ElementKind::Brick, material(set), L.region, "organs");
+  };
   for (int l = 0; l + 1 < torso_->levels(); ++l) {
     const LayerInfo& L = layers[static_cast<std::size_t>(l)];
     int column = -1;
@@ -317,13 +332,13 @@ void Builder::build_torso() {
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b) {
         auto h = torso_->block_cell(l, a, b);
-        brick(organ.at(L.region), h);
+        brick(organ_part(L), h);
         torso_hexes_.push_back(h);
       }
     for (int r = 0; r < 3; ++r)
       for (int j = 0; j < N; ++j) {
         auto h = torso_->ring_cell(l, r, j);
-        int p = torso_->is_column_cell(r, j) ? column : r == 0 ? organ.at(L.region) : flesh.at(L.region);
+        int p = torso_->is_column_cell(r, j) ? column : r == 0 ? organ_part(L) : flesh.at(L.region);
         brick(p, h);
         torso_hexes_.push_back(h);
       }
@@ -344,8 +359,8 @@ void Builder::build_torso() {
     throw std::logic_error("no torso level " + level_name);
   };
   lm_.boundary_centres["T1_upper"] = centre("T1_upper");
-  lm_.boundary_centres["T12_lower"] = centre("T12_lower");
-  lm_.boundary_centres["L5_lower"] = centre("L5_lower");
+  lm_.boundary_centres["T9_lower"] = centre("T9_lower");
+  lm_.boundary_centres["L3_lower"] = centre("L3_lower");
   lm_.boundary_centres["seat"] = centre("seat");
 }
 

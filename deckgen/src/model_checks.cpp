@@ -372,9 +372,9 @@ MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLan
       row.has_target_inertia = true;
     } else {
       std::string top, bottom;
-      if (t.name == "thorax") { top = "T1_upper"; bottom = "T12_lower"; }
-      else if (t.name == "abdomen") { top = "T12_lower"; bottom = "L5_lower"; }
-      else if (t.name == "pelvis") { top = "L5_lower"; bottom = "seat"; }
+      if (t.name == "thorax") { top = "T1_upper"; bottom = "T9_lower"; }
+      else if (t.name == "abdomen") { top = "T9_lower"; bottom = "L3_lower"; }
+      else if (t.name == "pelvis") { top = "L3_lower"; bottom = "seat"; }
       else if (t.name == "neck") { top = "C0"; bottom = "T1_upper"; }
       else throw std::runtime_error("segment_targets.csv:" + std::to_string(t.line) + ": axis CoG defined only for thorax, abdomen, pelvis, neck");
       V3 a = lm.boundary_centres.at(top), b = lm.boundary_centres.at(bottom);

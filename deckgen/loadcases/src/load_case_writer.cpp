@@ -293,7 +293,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   CardBuilder(d, "/INIVEL/TRA", obj + 1, "impactor initial velocity")
       .set(0, "Vx", tidy(v0.x())).set(0, "Vy", tidy(v0.y())).set(0, "Vz", tidy(v0.z())).set_int(0, "grnod_id", obj + 3).commit();
   add_part_group(d, "/SURF/PART", obj + 1, "impactor face and rim", {part});
-  CardBuilder(d, "/INTER/TYPE7", obj + 1, "impactor to skin")
+  CardBuilder(d, "/INTER/TYPE7", obj + 1, "impactor contact")
       .set_int(0, "grnod_id", obj + 4).set_int(0, "surf_id", obj + 1)
       .set(3, "Stfac", 1.0).set(3, "Fric", spec.friction).set(3, "Gapmin", spec.contact_gap_mm)
       .set(4, "VISs", spec.contact_damping)
@@ -311,7 +311,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
     t.commit();
   }
   add_th(d, "/TH/RBODY", obj + 2, "impactor rigid body", {"FX", "FY", "FZ", "VX", "VY", "VZ"}, {obj + 1});
-  add_th(d, "/TH/INTER", obj + 3, "impactor contact", {"FN", "FNX", "FNY", "FNZ", "FT", "ECONT"}, {obj + 1});
+  add_th(d, "/TH/INTER", obj + 3, "impactor contact", {"FN", "FT", "ECONT"}, {obj + 1});
 
   // Texts.
   const std::string rel_model = fs::relative(fs::absolute(model_path), fs::absolute(out_dir)).generic_string();
