@@ -20,3 +20,12 @@ TEST(FunctionCurve, InterpolatesAndExtendsEndSegments) {
   const FunctionCurve c(2, "const", {0.0}, {7.0});
   EXPECT_DOUBLE_EQ(c(100.0), 7.0);
 }
+
+TEST(FunctionCurve, IntegralIsExactIncludingExtension) {
+  const FunctionCurve f(1, "ramp", {0.0, 1.0, 3.0}, {0.0, 2.0, 3.0});
+  EXPECT_DOUBLE_EQ(f.integral(0.0, 1.0), 1.0);
+  EXPECT_DOUBLE_EQ(f.integral(1.0, 3.0), 5.0);
+  EXPECT_DOUBLE_EQ(f.integral(0.5, 2.0), 0.75 + 2.25);
+  EXPECT_DOUBLE_EQ(f.integral(3.0, 5.0), 3.0 * 2 + 0.25 * 4);  // y = 3 + 0.5 (x - 3)
+  EXPECT_DOUBLE_EQ(f.integral(-1.0, 0.0), -1.0);               // y = 2 x
+}

@@ -180,7 +180,9 @@ def patch_distorted():
     d = Deck("patch_distorted", [
         "patch_distorted: patch test on a distorted 2 x 2 x 2 brick mesh (interior node moved).",
         "Every boundary node has the velocity of the linear field v = A x (/IMPVEL per node",
-        "and direction), the interior node is free. What it shows: the stress is the same in",
+        "and direction, and /INIVEL from t = 0), the interior node is free with the field's",
+        "initial velocity (/INIVEL).",
+        "What it shows: the stress is the same in",
         "every element (uniform to 1e-10 relative) and the interior node follows the linear",
         "field: the one-point uniform-gradient brick passes the patch test on distorted meshes.",
         RUN.format("patch_distorted"), CHECK])
@@ -208,7 +210,11 @@ def patch_distorted():
         for a, name in enumerate("XYZ"):
             v = sum(A[a][b] * x[b] for b in range(3))
             d.impvel(100 * gid + a, f"node {n} {name}", 1, name, gid, v)
+        d.inivel(100 + gid, f"node {n}", [sum(A[a][b] * x[b] for b in range(3)) for a in range(3)], gid)
         gid += 1
+    xi = d.nodes[grid[(1, 1, 1)]]
+    d.grnod(gid, "interior", [grid[(1, 1, 1)]])
+    d.inivel(1, "interior on the field", [sum(A[a][b] * xi[b] for b in range(3)) for a in range(3)], gid)
     d.th_nodes(1, "interior", ["DX", "DY", "DZ"], [(grid[(1, 1, 1)], "interior node")])
     d.engine(0.05, 0.01, print_every=100)
     d.write()

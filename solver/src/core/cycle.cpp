@@ -264,7 +264,9 @@ void account_energies(Model& m, CycleState& c) {
              (ax * (nd.v.x[i] - dt * ax) + ay * (nd.v.y[i] - dt * ay) + az * (nd.v.z[i] - dt * az));
     });
     const auto [ke, ker] = half_step_kinetic(nd, c.chunk_scratch);
-    E.kinetic = c.kinetic_half_prev + corr;
+    // At t^0 the initial kinetic energy itself (forces of a velocity jump at t^0 have
+    // done no work yet).
+    E.kinetic = c.step.cycle == 0 ? c.kinetic_half_prev : c.kinetic_half_prev + corr;
     E.rotational = 0.5 * (c.rotational_half_prev + ker);
     c.kinetic_half_prev = ke;
     c.rotational_half_prev = ker;

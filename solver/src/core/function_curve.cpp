@@ -9,7 +9,21 @@ namespace hbm::solver {
 
 FunctionCurve::FunctionCurve(std::int64_t id, std::string title, std::vector<double> x,
                              std::vector<double> y)
-    : id_(id), title_(std::move(title)), x_(std::move(x)), y_(std::move(y)) {}
+    : id_(id), title_(std::move(title)), x_(std::move(x)), y_(std::move(y)) {
+  area_.assign(x_.size(), 0.0);
+  for (std::size_t i = 1; i < x_.size(); ++i)
+    area_[i] = area_[i - 1] + 0.5 * (y_[i - 1] + y_[i]) * (x_[i] - x_[i - 1]);
+}
+
+double FunctionCurve::antiderivative(double x) const {
+  if (x_.empty()) return 0.0;
+  if (x_.size() == 1) return y_[0] * (x - x_[0]);
+  const std::size_t i = segment_of(x);
+  const double dx = x_[i + 1] - x_[i];
+  const double slope = dx > 0 ? (y_[i + 1] - y_[i]) / dx : 0.0;
+  const double u = x - x_[i];
+  return area_[i] + y_[i] * u + 0.5 * slope * u * u;
+}
 
 std::size_t FunctionCurve::segment_of(double x) const {
   if (x_.size() < 2) return 0;

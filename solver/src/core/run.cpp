@@ -149,7 +149,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
     update_velocities(model, c);
     impose_constraints(model, c);
     account_energies(model, c);
-    model.dt_mid = c.dt_mid;
+    model.dt_output = c.step.dt_next;
     const double t = c.step.time;
     for (const auto& e : c.events) listing.line("  " + e);
     c.events.clear();
@@ -191,9 +191,9 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       const NodalState& n = model.nodes;
       vel_out.resize(n.n_nodes);
       for (std::size_t i = 0; i < n.n_nodes; ++i) {
-        vel_out.x[i] = n.v.x[i] - 0.5 * c.dt_mid * n.a.x[i];
-        vel_out.y[i] = n.v.y[i] - 0.5 * c.dt_mid * n.a.y[i];
-        vel_out.z[i] = n.v.z[i] - 0.5 * c.dt_mid * n.a.z[i];
+        vel_out.x[i] = n.v.x[i] - 0.5 * c.step.dt_next * n.a.x[i];
+        vel_out.y[i] = n.v.y[i] - 0.5 * c.step.dt_next * n.a.y[i];
+        vel_out.z[i] = n.v.z[i] - 0.5 * c.step.dt_next * n.a.z[i];
       }
       std::string err;
       if (!vtk.write_frame(model, t, vel_out, err)) listing.line("  warning: animation: " + err);

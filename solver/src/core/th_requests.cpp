@@ -34,7 +34,7 @@ std::optional<ThProbe> node_probe(const Model& m, Index node, const std::string&
     }
     if (var[0] == 'V') {
       p.unit = Dimension::Velocity;
-      p.read = [n, i, pick, mp] { return pick(n->v, i) - 0.5 * mp->dt_mid * pick(n->a, i); };
+      p.read = [n, i, pick, mp] { return pick(n->v, i) - 0.5 * mp->dt_output * pick(n->a, i); };
       return p;
     }
     if (var[0] == 'A') {
@@ -72,8 +72,8 @@ std::optional<ThProbe> part_probe(const Model& m, Index part, const std::string&
         for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
           const auto i = static_cast<std::size_t>(g->connectivity[k]);
           const auto share = static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
-          const double vx = n.v.x[i] - 0.5 * mp->dt_mid * n.a.x[i], vy = n.v.y[i] - 0.5 * mp->dt_mid * n.a.y[i],
-                       vz = n.v.z[i] - 0.5 * mp->dt_mid * n.a.z[i];
+          const double vx = n.v.x[i] - 0.5 * mp->dt_output * n.a.x[i], vy = n.v.y[i] - 0.5 * mp->dt_output * n.a.y[i],
+                       vz = n.v.z[i] - 0.5 * mp->dt_output * n.a.z[i];
           s += 0.5 * n.mass[i] / share * (vx * vx + vy * vy + vz * vz);
         }
       return s;

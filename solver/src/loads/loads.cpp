@@ -46,12 +46,15 @@ void FixedDofs::impose_velocities(const StepContext&, NodalState& n) {
 }
 
 void ImposedVelocity::impose_velocities(const StepContext& step, NodalState& n) {
-  const double t = step.time + 0.5 * step.dt_next;  // t^{n+1/2}
-  if (t < t_start || (t_stop > 0.0 && t > t_stop)) {
+  // v^{n+1/2} = mean of Fscale f(t / Ascale) over [t^n, t^{n+1}] within [Tstart, Tstop]:
+  // the imposed displacement is then exact at every step for any function.
+  const double t0 = std::max(step.time, t_start);
+  const double t1 = t_stop > 0.0 ? std::min(step.time + step.dt_next, t_stop) : step.time + step.dt_next;
+  if (!(t1 > t0)) {
     work_ = work_done_;
     return;
   }
-  const double value = fscale * (*function)(t / ascale);
+  const double value = fscale * ascale * function->integral(t0 / ascale, t1 / ascale) / step.dt_next;
   const double dt = 0.5 * (step.dt_prev + step.dt_next);
   double half = 0.0, full = 0.0;
   for (Index node : nodes) {

@@ -2,8 +2,9 @@
 // Boundary conditions and loads of the starter deck:
 //  - /BCS        FixedDofs constraint: listed components of v (and omega) set to 0.
 //  - /IMPVEL     ImposedVelocity constraint: v_dir(t) = Fscale_y f(t / Ascale_x) for
-//                Tstart <= t <= Tstop (Tstop 0 = never stops), evaluated at the half
-//                step t^{n+1/2}; reaction work m dv (v^{n-1/2} + v^{n+1/2}) / 2.
+//                Tstart <= t <= Tstop (Tstop 0 = never stops); v^{n+1/2} is the mean of
+//                v_dir over [t^n, t^{n+1}] (exact integral), so the imposed displacement
+//                is exact at every step; outside the window the DOF is free. Reaction work m dv (v^{n-1/2} + v^{n+1/2}) / 2.
 //  - /GRAV       Gravity interaction: f = m g(t), g(t) = Fscale_y f(t / Ascale_x) along
 //                Dir, on a node group; work trapezoidal 0.5 (f^{n-1} + f^n) v^{n-1/2} dt.
 //  - /INIVEL/TRA initial velocity (applied once in the build phase).

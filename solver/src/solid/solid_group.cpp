@@ -165,15 +165,44 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
       continue;
     }
     const double inv_v = 1.0 / V;
-    // Velocity gradient L_ij = sum_I v_iI B_jI.
+    // Velocity gradient L_ij = sum_I v_iI B_jI on the mid-step configuration
+    // x^{n-1/2} = x^n - dt/2 v^{n-1/2} (second-order accurate strain increment; the
+    // stress work then matches the trapezoidal work of the nodal forces).
     double L[3][3] = {};
-    for (int i = 0; i < NPE; ++i) {
-      L[0][0] += vx[i] * bx[i]; L[0][1] += vx[i] * by[i]; L[0][2] += vx[i] * bz[i];
-      L[1][0] += vy[i] * bx[i]; L[1][1] += vy[i] * by[i]; L[1][2] += vy[i] * bz[i];
-      L[2][0] += vz[i] * bx[i]; L[2][1] += vz[i] * by[i]; L[2][2] += vz[i] * bz[i];
+    double v_mid = V;
+    {
+      double xm[8], ym[8], zm[8], mx[8], my[8], mz[8], vm = V, am = 0.0;
+      const double* gx = bx;
+      const double* gy = by;
+      const double* gz = bz;
+      if (dt > 0.0) {
+        for (int i = 0; i < NPE; ++i) {
+          xm[i] = x[i] - 0.5 * dt * vx[i];
+          ym[i] = y[i] - 0.5 * dt * vy[i];
+          zm[i] = z[i] - 0.5 * dt * vz[i];
+        }
+        if constexpr (NPE == 8)
+          brick::volume_gradient(xm, ym, zm, mx, my, mz, vm, am);
+        else
+          tetra_volume_gradient(xm, ym, zm, mx, my, mz, vm, am);
+        if (vm > 0.0) {
+          gx = mx;
+          gy = my;
+          gz = mz;
+        } else {
+          vm = V;
+        }
+      }
+      for (int i = 0; i < NPE; ++i) {
+        L[0][0] += vx[i] * gx[i]; L[0][1] += vx[i] * gy[i]; L[0][2] += vx[i] * gz[i];
+        L[1][0] += vy[i] * gx[i]; L[1][1] += vy[i] * gy[i]; L[1][2] += vy[i] * gz[i];
+        L[2][0] += vz[i] * gx[i]; L[2][1] += vz[i] * gy[i]; L[2][2] += vz[i] * gz[i];
+      }
+      v_mid = vm;
+      const double inv_vm = 1.0 / vm;
+      for (auto& row : L)
+        for (double& v : row) v *= inv_vm;
     }
-    for (auto& row : L)
-      for (double& v : row) v *= inv_v;
     const double d[6] = {L[0][0], L[1][1], L[2][2], 0.5 * (L[0][1] + L[1][0]),
                          0.5 * (L[1][2] + L[2][1]), 0.5 * (L[2][0] + L[0][2])};
     const double wxy = 0.5 * (L[0][1] - L[1][0]), wyz = 0.5 * (L[1][2] - L[2][1]),
@@ -210,7 +239,7 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
     auto power = [&](const double* s) {
       return s[0] * d[0] + s[1] * d[1] + s[2] * d[2] + 2.0 * (s[3] * d[3] + s[4] * d[4] + s[5] * d[5]);
     };
-    const double de = (0.5 * (power(s_old) + power(s_new)) - 0.5 * (q_bulk[e] + q) * dv) * V * dt;
+    const double de = (0.5 * (power(s_old) + power(s_new)) - 0.5 * (q_bulk[e] + q) * dv) * v_mid * dt;
     q_bulk[e] = q;
     e_int[e] += de;
     e_int_inc += de;

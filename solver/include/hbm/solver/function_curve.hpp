@@ -27,12 +27,16 @@ class FunctionCurve {
   double slope(double x) const;                          // dy/dx of the segment at x
   // Same as operator() with a hint: `segment` is the segment used last time (updated).
   double eval_from(double x, std::size_t& segment) const;
+  // Exact integral of y from a to b (with the same linear extension outside the range).
+  double integral(double a, double b) const { return antiderivative(b) - antiderivative(a); }
+  double antiderivative(double x) const;  // integral from x_first to x
 
  private:
   std::size_t segment_of(double x) const;  // i such that x in [x_i, x_{i+1}], clamped
   std::int64_t id_ = 0;
   std::string title_;
   std::vector<double> x_, y_;
+  std::vector<double> area_;  // integral from x_0 to x_i
 };
 
 }  // namespace hbm::solver

@@ -49,9 +49,9 @@ struct Model {
   std::vector<std::unique_ptr<FunctionCurve>> functions;   // stable addresses
   std::vector<ThGroup> th_groups;
   RunControl control;
-  // Velocity-update step dt^n of the current cycle: outputs at t^n report velocities
-  // v^n = v^{n+1/2} - dt^n a^n / 2 (set by the run loop) [time].
-  double dt_mid = 0.0;
+  // Step dt^{n+1/2} of the current cycle: outputs at t^n report velocities
+  // v^n = v^{n+1/2} - dt^{n+1/2} a^n / 2 (set by the run loop) [time].
+  double dt_output = 0.0;
 
   // Node -> slot incidence for deterministic assembly (CSR over nodes). Entry j of node
   // i's range refers to slot `slot[j]` of group `slot_group[j]`, in (group, element)
