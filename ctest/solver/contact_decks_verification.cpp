@@ -9,6 +9,8 @@
 //  - contact_block_slide: deceleration mu g within 2% for TYPE7 friction and for the
 //    RWALL with Slide = 2; tangential / normal wall force = mu (0.1%: a node whose
 //    tangential velocity stops within a step takes less than mu dv_n).
+//  - contact_shell_fold: shell strip thrown onto itself (self-contact, gap = t): the
+//    mid-surfaces never cross (distance > 0 at every output) and contact did happen.
 //  - contact_tied_bar: reflection at the TYPE2 interface < 2% of the incident pulse,
 //    transmitted amplitude within 3% of the control bar's.
 #include <gtest/gtest.h>
@@ -228,4 +230,27 @@ TEST(ContactDecks, TiedBarTransmitsTheWave) {
   EXPECT_NEAR(inc, 1.0, 0.05);  // imposed amplitude 1 mm/ms, element dispersion
   EXPECT_LT(refl, 0.02 * inc);
   EXPECT_NEAR(tr, trc, 0.03 * trc);
+}
+
+TEST(ContactDecks, FoldedShellStripDoesNotCrossItself) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_shell_fold";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const double gap = 1.0, z_upper = 5.0;  // make_deck.py: t = 1, legs 2 RF = 5 mm apart
+  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  double dmin = 1e30, dz_min = 0;
+  for (const auto& r : c.rows)
+    for (int k = 0; k < 3; ++k) {
+      const double lower = r[9 + 2 * k], upper = z_upper + r[10 + 2 * k];
+      dmin = std::min(dmin, upper - lower);
+      dz_min = std::min(dz_min, r[10 + 2 * k]);
+    }
+  EXPECT_GT(dmin, 0.0) << "the upper leg went through the lower one";
+  EXPECT_LT(dmin, gap) << "the legs never came within the gap: no contact tested";
+  const Csv i = read_csv(fs::path(name) / (name + "_TH_INTER_3.csv"));
+  double nact = 0;
+  for (double v : i.column(i.col("NACT"))) nact = std::max(nact, v);
+  EXPECT_GT(nact, 10.0);
+  // The upper leg came back up after the impact (rebound).
+  EXPECT_GT(c.rows.back()[10], dz_min + 1.0);
 }

@@ -49,7 +49,7 @@ class Starter:
         self.card(f"/PROP/TYPE14/{pid}", title, [i10(isolid), f20(qa) + f20(qb) + f20(h)])
 
     def prop_shell(self, pid, title, thick, n=5):
-        self.card(f"/PROP/TYPE1/{pid}", title, [i10(24), f20(0.01) + f20(0.01) + f20(0.01),
+        self.card(f"/PROP/TYPE1/{pid}", title, [i10(4), f20(0.01) + f20(0.01) + f20(0.01),
                                                 i10(n) + i10(0) + f20(thick)])
 
     def law1(self, mid, title, rho, e, nu):
