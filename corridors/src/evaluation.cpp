@@ -425,7 +425,7 @@ CriterionResult evaluate_criterion(const CaseDefinition& cd, const EvaluationRes
   if (c.kind == "peak") {
     const std::string unit = c.unit.empty() ? r.signal(c.signal).unit : c.unit;
     const auto p = signed_peak(t_rel, in(c.signal, unit));
-    out.quantity = "peak " + c.signal;
+    out.quantity = c.name != "peak" ? c.name : "peak " + c.signal;
     out.value = p.value;
     out.unit = unit;
     out.t1_ms = out.t2_ms = p.t1;
@@ -493,7 +493,7 @@ CriterionResult evaluate_criterion(const CaseDefinition& cd, const EvaluationRes
     out.risk_source = "AIS3+ neck, NHTSA NCAP 2008 [check]";
   } else if (c.kind == "belt_force") {
     const auto p = signed_peak(t_rel, in(c.signal, "kN"));
-    out.quantity = "peak belt force " + c.signal;
+    out.quantity = "peak belt force " + (c.name != "belt_force" ? c.name : c.signal);
     out.value = std::abs(p.value);
     out.unit = "kN";
     out.t1_ms = out.t2_ms = p.t1;
