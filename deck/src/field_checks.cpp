@@ -74,7 +74,8 @@ void DiagSink::error(SourceLoc loc, int col, std::string msg) {
 }
 
 void DiagSink::warning(SourceLoc loc, int col, std::string msg) {
-  if (full_) return;
+  if (full_ || warnings_ >= kMaxErrors) return;  // warnings are bounded too
+  ++warnings_;
   out_.push_back(Diagnostic{Severity::Warning, loc, col, std::move(msg)});
 }
 

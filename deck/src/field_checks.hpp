@@ -34,6 +34,7 @@ class DiagSink {
  private:
   std::vector<Diagnostic>& out_;
   std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
   bool full_ = false;
 };
 
