@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Writes docs/validation.md, the biofidelity table of the hub pendulum validation cases,
+from the files scripts/validate.sh leaves in its work folder. Nothing in the table is
+typed in: every number is read from a run (solver listing and time-history CSV, wall
+time measured by validate.sh) or from the hbm-corridors summary.json of that run.
+
+  validation_report.py --work DIR --cases "a b ..." --model FILE --out FILE.md --images DIR
+
+Per case the work folder holds runs/CASE/ (solver output), runs/CASE.run.txt (exit code,
+wall time), runs/CASE.loadcase.txt (hbm-loadcase summary), reports/CASE/summary.json.
+The plots are copied to --images and linked relative to the Markdown file.
+"""
+import argparse
+import csv
+import datetime
+import glob
+import hashlib
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+GOAL_ENERGY = 2.0      # % (issue 8)
+GOAL_ADDED = 1.0       # %
+GOAL_HOURGLASS = 10.0  # % of internal energy
+GOAL_R = 0.70
+GOAL_WALL_60MS = 60.0  # s for a 60 ms run
+
+
+def read_kv(path):
+    out = {}
+    if os.path.exists(path):
+        for line in open(path):
+            if "=" in line:
+                k, v = line.strip().split("=", 1)
+                out[k] = v
+    return out
+
+
+def global_history(run_dir):
+    """Global columns (identical in every TH file) of the first TH CSV of a run."""
+    files = sorted(glob.glob(os.path.join(run_dir, "*_TH_*.csv")))
+    if not files:
+        return None
+    with open(files[0]) as f:
+        rows = list(csv.reader(f))
+    if len(rows) < 2:
+        return None
+    head = rows[0]
+
+    def col(prefix):
+        for i, h in enumerate(head):
+            if h.startswith(prefix):
+                return i
+        raise KeyError(f"{files[0]}: no column '{prefix}...'")
+
+    idx = {k: col(k) for k in ["time", "kinetic energy", "internal energy", "hourglass energy",
+                              "contact energy", "external work", "added mass", "mass ratio", "energy error"]}
+    data = {k: [] for k in idx}
+    for r in rows[1:]:
+        try:
+            vals = {k: float(r[i]) for k, i in idx.items()}
+        except (ValueError, IndexError):
+            continue
+        for k in idx:
+            data[k].append(vals[k])
+    return data
+
+
+def listing_facts(run_dir, case):
+    path = os.path.join(run_dir, f"{case}_0001.out")
+    facts = {"terminated": "no listing", "cycles": None, "solver_wall_s": None, "reason": ""}
+    if not os.path.exists(path):
+        return facts
+    text = open(path, errors="replace").read()
+    m = re.search(r"TIMING \(wall ([0-9.eE+-]+) s, (\d+) cycles\)", text)
+    if m:
+        facts["solver_wall_s"], facts["cycles"] = float(m.group(1)), int(m.group(2))
+    if "NORMAL TERMINATION" in text:
+        facts["terminated"] = "normal"
+    else:
+        tail = [l.strip() for l in text.strip().splitlines()[-40:] if l.strip()]
+        reason = [l for l in tail if re.search(r"stop|error|invert|exceed|ERROR|STOP", l)]
+        facts["terminated"] = "stopped"
+        facts["reason"] = reason[-1] if reason else (tail[-1] if tail else "")
+    return facts
+
+
+def fmt(v, p=2):
+    if v is None:
+        return "-"
+    return f"{v:.{p}f}"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--cases", required=True)
+    ap.add_argument("--model", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--images", required=True)
+    a = ap.parse_args()
+    cases = a.cases.split()
+    doc_dir = os.path.dirname(os.path.abspath(a.out))
+    os.makedirs(a.images, exist_ok=True)
+
+    runs, ratings, notes = [], [], []
+    for c in cases:
+        run_dir = os.path.join(a.work, "runs", c)
+        kv = read_kv(os.path.join(a.work, "runs", f"{c}.run.txt"))
+        lf = listing_facts(run_dir, c)
+        gh = global_history(run_dir)
+        r = {"case": c, "exit": kv.get("exit_code", "-"), "wall": float(kv["wall_s"]) if "wall_s" in kv else None,
+             "threads": kv.get("threads", "-"), **lf}
+        if gh and gh["time"]:
+            r["t_end"] = gh["time"][-1]
+            r["energy_err"] = 100 * max(abs(e) for e in gh["energy error"])
+            r["added"] = 100 * gh["mass ratio"][-1]
+            ie, he = gh["internal energy"], gh["hourglass energy"]
+            ie_max = max(abs(x) for x in ie) if ie else 0
+            ratios = [100 * h / i for h, i in zip(he, ie) if ie_max > 0 and i > 0.1 * ie_max]
+            r["hg_end"] = 100 * he[-1] / ie[-1] if ie[-1] > 0 else None
+            r["hg_max"] = max(ratios) if ratios else None
+        runs.append(r)
+        lc = os.path.join(a.work, "runs", f"{c}.loadcase.txt")
+        if os.path.exists(lc):
+            for line in open(lc):
+                if "warning:" in line:
+                    notes.append(f"{c}: {line.split('warning:', 1)[1].strip()}")
+        sj = os.path.join(a.work, "reports", c, "summary.json")
+        if not os.path.exists(sj):
+            notes.append(f"{c}: no corridor report (hbm-corridors failed or the run left no time history; "
+                         f"see {os.path.join(a.work, 'reports', c + '.log')})")
+            continue
+        s = json.load(open(sj))
+        for rt in s.get("ratings", []):
+            iso, cora = rt.get("iso18571", {}), rt.get("cora", {})
+            img = None
+            for p in rt.get("plots", []):
+                if p.endswith(".png"):
+                    src = os.path.join(a.work, "reports", c, p)
+                    if os.path.exists(src):
+                        img = os.path.join(a.images, f"{c}_{os.path.basename(p)}")
+                        shutil.copyfile(src, img)
+            ratings.append({"case": c, "name": rt["name"], "title": rt.get("title", rt["name"]), "kind": rt.get("kind"),
+                            "unit": rt.get("y_unit", ""), "x_unit": rt.get("x_unit", ""),
+                            "model_peak": rt.get("model_peak"), "ref_peak": rt.get("reference_peak"),
+                            "model_defl": rt.get("model_peak_deflection"), "ref_defl": rt.get("reference_peak_deflection"),
+                            "R": iso.get("R"), "grade": iso.get("grade", "-"), "Z": iso.get("Z"), "EP": iso.get("EP"),
+                            "EM": iso.get("EM"), "ES": iso.get("ES"), "cora": cora.get("overall"),
+                            "inside": rt.get("inside_fraction"), "img": img, "reference": rt.get("reference", "")})
+            for n in rt.get("notes", []):
+                notes.append(f"{c} / {rt['name']}: {n}")
+
+    # Provenance.
+    try:
+        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "status", "--porcelain", "--", a.model], capture_output=True, text=True).stdout.strip()
+    except OSError:
+        commit, dirty = "?", ""
+    sha = hashlib.sha256(open(a.model, "rb").read()).hexdigest()[:12] if os.path.exists(a.model) else "missing"
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+
+    rs = [x["R"] for x in ratings if x["R"] is not None]
+    mean_r = sum(rs) / len(rs) if rs else None
+    n_poor = sum(1 for x in ratings if x["grade"] == "poor")
+    normal = sum(1 for r in runs if r["terminated"] == "normal")
+    e_max = max((r.get("energy_err") for r in runs if r.get("energy_err") is not None), default=None)
+    am_max = max((r.get("added") for r in runs if r.get("added") is not None), default=None)
+    hg_max = max((r.get("hg_end") for r in runs if r.get("hg_end") is not None), default=None)
+    full = [r for r in runs if r.get("t_end") and r["t_end"] >= 59.9 and r["wall"] is not None]
+    wall_max = max((r["wall"] for r in full), default=None)
+
+    def yes(ok):
+        return "-" if ok is None else ("yes" if ok else "**no**")
+
+    L = []
+    L.append("<!-- Generated by scripts/validate.sh (ctest/validation/tools/validation_report.py) from real runs; "
+             "do not edit by hand: run `ctest --test-dir build -L validation` or `scripts/validate.sh`. -->")
+    L.append("# Validation: hub pendulum impacts on the body model")
+    L.append("")
+    L.append(f"Generated {now} from commit `{commit}`{' (model file modified)' if dirty else ''}; model "
+             f"`{a.model}` (sha256 {sha}); {os.cpu_count()} cores on the machine that ran it. "
+             "Decks: `hbm-loadcase` (`decks/<case>/`), runs: `hbm-solver`, ratings: `hbm-corridors` "
+             "(ISO/TS 18571 and CORA as described in `docs/corridors.md`). Load cases and method: "
+             "see the end of this page.")
+    L.append("")
+    L.append("## Goals of issue 8")
+    L.append("")
+    L.append("| goal | measured | met |")
+    L.append("|---|---|---|")
+    L.append(f"| every case terminates normally | {normal} of {len(runs)} | {yes(normal == len(runs) and runs)} |")
+    L.append(f"| energy error < {GOAL_ENERGY:g} % | max {fmt(e_max)} % | {yes(None if e_max is None else e_max < GOAL_ENERGY)} |")
+    L.append(f"| added mass <= {GOAL_ADDED:g} % | max {fmt(am_max, 3)} % | {yes(None if am_max is None else am_max <= GOAL_ADDED)} |")
+    L.append(f"| hourglass < {GOAL_HOURGLASS:g} % of internal energy (end of run) | max {fmt(hg_max, 1)} % | "
+             f"{yes(None if hg_max is None else hg_max < GOAL_HOURGLASS)} |")
+    L.append(f"| ISO/TS 18571 R >= {GOAL_R:.2f} on average | {fmt(mean_r, 3)} over {len(rs)} channel(s) | "
+             f"{yes(None if mean_r is None else mean_r >= GOAL_R)} |")
+    L.append(f"| no channel graded poor | {n_poor} poor | {yes(None if not ratings else n_poor == 0)} |")
+    L.append(f"| each 60 ms run under {GOAL_WALL_60MS:g} s | "
+             + (f"max {fmt(wall_max, 1)} s over {len(full)} full run(s)" if full else "no full 60 ms run in this table")
+             + f" | {yes(None if wall_max is None else wall_max < GOAL_WALL_60MS)} |")
+    L.append("")
+    L.append("## Runs")
+    L.append("")
+    L.append("| case | termination | simulated [ms] | cycles | wall [s] | threads | energy error max [%] | "
+             "added mass end [%] | hourglass / internal end [%] | hourglass / internal max [%] |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|")
+    for r in runs:
+        term = r["terminated"] + (f" (exit {r['exit']}: {r['reason']})" if r["terminated"] != "normal" else "")
+        L.append(f"| {r['case']} | {term} | {fmt(r.get('t_end'))} | {r['cycles'] if r['cycles'] is not None else '-'} | "
+                 f"{fmt(r['wall'], 1)} | {r['threads']} | {fmt(r.get('energy_err'))} | {fmt(r.get('added'), 3)} | "
+                 f"{fmt(r.get('hg_end'), 1)} | {fmt(r.get('hg_max'), 1)} |")
+    L.append("")
+    L.append("Energy error = (E_kin + E_int + E_hg + E_contact) / (E_0 + W_ext) - 1 as the solver writes it; "
+             "added mass = (M - M0) / M0 from nodal mass scaling at the fixed 1.5 us step; hourglass / internal "
+             "max is taken over the times when the internal energy exceeds 10 % of its peak.")
+    L.append("")
+    L.append("## Channels")
+    L.append("")
+    L.append("| case | channel | model peak | corridor peak | model / corridor peak deflection | ISO R | grade | "
+             "Z | EP | EM | ES | CORA | inside corridor |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for x in ratings:
+        defl = (f"{fmt(x['model_defl'], 1)} / {fmt(x['ref_defl'], 1)} {x['x_unit']}"
+                if x["model_defl"] is not None else "-")
+        L.append(f"| {x['case']} | {x['name']} | {fmt(x['model_peak'])} {x['unit']} | {fmt(x['ref_peak'])} {x['unit']} | "
+                 f"{defl} | {fmt(x['R'], 3)} | {x['grade']} | {fmt(x['Z'], 3)} | {fmt(x['EP'], 3)} | {fmt(x['EM'], 3)} | "
+                 f"{fmt(x['ES'], 3)} | {fmt(x['cora'], 3)} | {fmt(None if x['inside'] is None else 100 * x['inside'], 0)} % |")
+    if not ratings:
+        L.append("| - | no rating (see notes) | | | | | | | | | | | |")
+    L.append("")
+    L.append("## Plots")
+    L.append("")
+    for x in ratings:
+        if x["img"]:
+            rel = os.path.relpath(os.path.abspath(x["img"]), doc_dir)
+            L.append(f"### {x['case']}: {x['title']}")
+            L.append("")
+            L.append(f"![{x['title']}]({rel})")
+            L.append("")
+    L.append("## Notes from the tools")
+    L.append("")
+    for n in notes or ["none"]:
+        L.append(f"- {n}")
+    L.append("")
+    L.append("## Load cases and method")
+    L.append("")
+    L.append("- Decks: `hbm-loadcase --case all` (sources `deckgen/loadcases/`); each `decks/<case>/<case>_0000.rad` "
+             "includes `decks/hbm50/hbm50.inc` and says in its header what it does. Impactor: rigid body of shells "
+             "(face + 20 mm rim) with 23.4 kg in all, rotations fixed, initial velocity by /INIVEL/TRA, placed 3 mm "
+             "from the skin; contact /INTER/TYPE7 skin nodes on the impactor face, gap 1 mm, friction 0.2, critical "
+             "contact damping. Subject free in space (seated without back support, no gravity over the 60 ms). "
+             "/DT/NODA/CST 0.9 1.5E-3, /STOP DMmax 0.01, time histories every 0.01 ms.")
+    L.append("- Frontal (Lebarbe & Petit 2012): 152 mm face at mid-sternum height on the mid-plane, travelling -X; "
+             "force = 23.4 kg x impactor deceleration (CFC 180), deflection = impactor displacement relative to the "
+             "T8 node (case files `corridors/cases/lebarbe2012_hub_*.toml`).")
+    L.append("- Oblique thorax (Viano 1989): 150 mm face, 30 deg forward of lateral from the left, axis through the "
+             "torso centre at the lower end of the sternum (xiphoid); channels projected on the impact axis "
+             "(`ctest/validation/cases/viano1989_thorax_oblique_*_model_frame.toml`, because the model cannot be "
+             "turned onto the global Y axis).")
+    L.append("- Lateral pelvis (Viano 1989): 150 mm face on the left greater trochanter landmark, travelling -Y "
+             "(`corridors/cases/viano1989_pelvis_lateral_5p2.toml`).")
+    L.append("- No material was tuned per case; calibration notes go to `geometry/calibration-notes-validation.md`.")
+    tmp = a.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("\n".join(L) + "\n")
+    os.replace(tmp, a.out)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Validation chain (issue 8): generate the hub pendulum load cases on the body model
+# (hbm-loadcase), run each with hbm-solver, rate it with hbm-corridors, and write the
+# biofidelity table docs/validation.md (ctest/validation/tools/validation_report.py).
+#
+#   scripts/validate.sh [--build DIR] [--work DIR] [--cases "NAME ..."|all] [--tstop MS]
+#                       [--model FILE] [--doc FILE|--no-doc] [--threads N] [--jobs N]
+#
+# Defaults: build/, work folder out/validation, all cases, 60 ms, decks/hbm50/hbm50.inc,
+# docs/validation.md. With the default end time the decks are (re)generated in place in
+# decks/<case>/ (the committed load-case decks); with --tstop they go to WORK/decks/.
+# --jobs N runs N cases at the same time (each solver then gets nproc/N threads, at least
+# 1; results do not depend on the thread count). Every step runs for every case and the
+# table is written in any case; the exit status is 0 only if every run terminated
+# normally and every rating was written, 1 otherwise, 2 on bad usage.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build=build work=out/validation cases=all tstop="" model=decks/hbm50/hbm50.inc doc=docs/validation.md
+threads="" jobs=1
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) build=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    --cases) cases=$2; shift 2 ;;
+    --tstop) tstop=$2; shift 2 ;;
+    --model) model=$2; shift 2 ;;
+    --doc) doc=$2; shift 2 ;;
+    --no-doc) doc=""; shift ;;
+    --threads) threads=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    -h|--help) sed -n '3,17p' "$0"; exit 0 ;;
+    *) echo "validate.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+done
+bin=$build/bin
+for t in hbm-loadcase hbm-solver hbm-corridors; do
+  [[ -x $bin/$t ]] || { echo "validate.sh: $bin/$t not built (cmake --build $build --target $t)" >&2; exit 2; }
+done
+[[ -f $model ]] || { echo "validate.sh: no body model $model (generate it with hbm-deckgen)" >&2; exit 1; }
+[[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
+mkdir -p "$work/runs" "$work/reports"
+if [[ -n $tstop ]]; then decks=$work/decks; else decks=decks; fi
+
+# 1. decks
+for c in $cases; do
+  args=(--model "$model" --geometry geometry --case "$c" --decks "$decks")
+  [[ -n $tstop ]] && args+=(--tstop "$tstop")
+  "$bin/hbm-loadcase" "${args[@]}" | tee "$work/runs/$c.loadcase.txt"
+done
+
+# 2. runs (wall time measured here; the solver's own timing table is in its listing)
+run_case() {
+  local c=$1 th=()
+  [[ -n $threads ]] && th=(--threads "$threads")
+  rm -rf "$work/runs/$c"
+  local t0 t1 rc=0
+  t0=$(date +%s%N)
+  "$bin/hbm-solver" "$decks/$c/${c}_0000.rad" --out "$work/runs/$c" "${th[@]}" > "$work/runs/$c.log" 2>&1 || rc=$?
+  t1=$(date +%s%N)
+  local ms=$(( (t1 - t0) / 1000000 ))
+  printf 'exit_code=%d\nwall_s=%d.%03d\nthreads=%s\nnproc=%s\n' "$rc" $((ms / 1000)) $((ms % 1000)) \
+    "${threads:-default}" "$(nproc)" > "$work/runs/$c.run.txt"
+  echo "run $c: exit $rc, $(grep -m1 wall_s "$work/runs/$c.run.txt")"
+}
+if [[ $jobs -gt 1 && -z $threads ]]; then threads=$(( $(nproc) / jobs )); [[ $threads -ge 1 ]] || threads=1; fi
+n=0
+for c in $cases; do
+  run_case "$c" &
+  n=$((n + 1))
+  if [[ $n -ge $jobs ]]; then wait -n || true; n=$((n - 1)); fi
+done
+wait
+
+# 3. ratings (a run that produced no usable time history is reported, not rated)
+status=0
+for c in $cases; do
+  grep -q '^exit_code=0$' "$work/runs/$c.run.txt" || { echo "run $c did not terminate normally" >&2; status=1; }
+  corridor=$("$bin/hbm-loadcase" --case "$c" --print-corridor-case)
+  if ! "$bin/hbm-corridors" --case "$corridor" --th "$work/runs/$c" --out "$work/reports/$c" --quiet \
+       > "$work/reports/$c.log" 2>&1; then
+    echo "rate $c: hbm-corridors failed (see $work/reports/$c.log):" >&2
+    tail -5 "$work/reports/$c.log" >&2
+    status=1
+  else
+    echo "rate $c: $work/reports/$c/report.md"
+  fi
+done
+
+# 4. table
+if [[ -n $doc ]]; then
+  /usr/bin/python3 ctest/validation/tools/validation_report.py --work "$work" --cases "$cases" \
+    --model "$model" --out "$doc" --images "$(dirname "$doc")/images/validation"
+  echo "wrote $doc"
+fi
+exit $status
