@@ -374,7 +374,7 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   std::vector<double> e_int_c(nch, 0.0), e_hg_c(nch, 0.0),
       dt_c(nch, std::numeric_limits<double>::infinity());
   std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
-#pragma omp parallel for schedule(static) if (nch > 1)
+#pragma omp parallel for schedule(static) if (nch >= 8)
   for (std::size_t ch = 0; ch < nch; ++ch) {
     if (nodes_per_element == 8)
       compute_chunk<8>(ch, step, nodes, e_int_c[ch], e_hg_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);

@@ -57,20 +57,13 @@ struct SolidMaterial {
 // W = [[0, wxy, -wzx], [-wxy, 0, wyz], [wzx, -wyz, 0]].
 inline void jaumann_increment(const double s[6], double wxy, double wyz, double wzx,
                               double dt, double ds[6]) {
-  // Full matrices: S = [[s0 s3 s5],[s3 s1 s4],[s5 s4 s2]]; (WS - SW) is symmetric.
-  const double W[3][3] = {{0.0, wxy, -wzx}, {-wxy, 0.0, wyz}, {wzx, -wyz, 0.0}};
-  const double S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
-  auto ws_sw = [&](int i, int j) {
-    double r = 0.0;
-    for (int k = 0; k < 3; ++k) r += W[i][k] * S[k][j] - S[i][k] * W[k][j];
-    return r;
-  };
-  ds[0] = dt * ws_sw(0, 0);
-  ds[1] = dt * ws_sw(1, 1);
-  ds[2] = dt * ws_sw(2, 2);
-  ds[3] = dt * ws_sw(0, 1);
-  ds[4] = dt * ws_sw(1, 2);
-  ds[5] = dt * ws_sw(2, 0);
+  // (W S - S W) with S = [[s0 s3 s5],[s3 s1 s4],[s5 s4 s2]], expanded.
+  ds[0] = dt * 2.0 * (wxy * s[3] - wzx * s[5]);
+  ds[1] = dt * 2.0 * (wyz * s[4] - wxy * s[3]);
+  ds[2] = dt * 2.0 * (wzx * s[5] - wyz * s[4]);
+  ds[3] = dt * (wxy * (s[1] - s[0]) - wzx * s[4] + wyz * s[5]);
+  ds[4] = dt * (wyz * (s[2] - s[1]) - wxy * s[5] + wzx * s[3]);
+  ds[5] = dt * (wzx * (s[0] - s[2]) - wyz * s[3] + wxy * s[4]);
 }
 
 // Per-point state the update reads and writes (pointers into the group's arrays).
@@ -83,8 +76,58 @@ struct SolidPointState {
 // Advance the stress over dt with rate of deformation d (Voigt, engineering-free:
 // d[3] = D_xy etc.) and spin (wxy, wyz, wzx). Writes the total stress to `out`.
 // Returns the plastic strain increment.
-double update_solid_stress(const SolidMaterial& m, const SolidPointState& st, const double d[6],
-                           double wxy, double wyz, double wzx, double dt, double out[6]);
+inline double update_solid_stress(const SolidMaterial& m, const SolidPointState& st, const double d[6],
+                           double wxy, double wyz, double wzx, double dt, double out[6]) {
+  double* s = st.sig;
+  double rot[6];
+  jaumann_increment(s, wxy, wyz, wzx, dt, rot);
+  const double dv = (d[0] + d[1] + d[2]) * dt;      // volumetric strain increment
+  const double de[6] = {d[0] * dt - dv / 3.0, d[1] * dt - dv / 3.0, d[2] * dt - dv / 3.0,
+                        d[3] * dt, d[4] * dt, d[5] * dt};  // deviatoric (tensor) increments
+  double dl = 0.0;
+  switch (m.law) {
+    case SolidLaw::Elastic: {
+      for (int k = 0; k < 6; ++k) s[k] += rot[k] + 2.0 * m.G * de[k];
+      for (int k = 0; k < 3; ++k) s[k] += m.K * dv;
+      for (int k = 0; k < 6; ++k) out[k] = s[k];
+      break;
+    }
+    case SolidLaw::JohnsonCook:
+    case SolidLaw::Tabulated: {
+      for (int k = 0; k < 6; ++k) s[k] += rot[k] + 2.0 * m.G * de[k];
+      for (int k = 0; k < 3; ++k) s[k] += m.K * dv;
+      const double p = (s[0] + s[1] + s[2]) / 3.0;
+      double dev[6] = {s[0] - p, s[1] - p, s[2] - p, s[3], s[4], s[5]};
+      // Equivalent total deviatoric strain rate sqrt(2/3 D':D') for the rate term.
+      const double rate = (dt > 0.0)
+          ? std::sqrt(2.0 / 3.0 * (de[0] * de[0] + de[1] * de[1] + de[2] * de[2] +
+                                   2.0 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) / dt
+          : 0.0;
+      dl = radial_return_3d(m.plasticity, m.G, dev, *st.eps_p, rate);
+      for (int k = 0; k < 3; ++k) s[k] = dev[k] + p;
+      for (int k = 3; k < 6; ++k) s[k] = dev[k];
+      for (int k = 0; k < 6; ++k) out[k] = s[k];
+      break;
+    }
+    case SolidLaw::Viscoelastic: {
+      double* h = st.hist;
+      double hrot[6];
+      jaumann_increment(h, wxy, wyz, wzx, dt, hrot);
+      const double x = m.beta * dt;
+      const double decay = std::exp(-x);
+      const double gain = (x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x;
+      for (int k = 0; k < 6; ++k) {
+        s[k] += rot[k] + 2.0 * m.Ginf * de[k];
+        h[k] = decay * (h[k] + hrot[k]) + 2.0 * (m.G0 - m.Ginf) * gain * de[k];
+      }
+      for (int k = 0; k < 3; ++k) s[k] += m.K * dv;
+      for (int k = 0; k < 6; ++k) out[k] = s[k] + h[k];
+      break;
+    }
+  }
+  return dl;
+}
+
 
 inline double von_mises(const double s[6]) {
   const double p = (s[0] + s[1] + s[2]) / 3.0;
