@@ -16,7 +16,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -253,4 +255,49 @@ TEST(ContactDecks, FoldedShellStripDoesNotCrossItself) {
   EXPECT_GT(nact, 10.0);
   // The upper leg came back up after the impact (rebound).
   EXPECT_GT(c.rows.back()[10], dz_min + 1.0);
+}
+
+TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {
+  REQUIRE_SOLVER();
+#ifdef HBM_SOLVER_EXE
+  // A wall whose M1 equals M has no normal: the run must stop before the loop (exit 1)
+  // with a message naming the file, line and card.
+  const fs::path dir = fs::current_path() / "contact_bad_wall";
+  fs::create_directories(dir);
+  auto f20 = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%20.6E", v);
+    return std::string(b);
+  };
+  auto i10 = [](long v) {
+    char b[16];
+    std::snprintf(b, sizeof b, "%10ld", v);
+    return std::string(b);
+  };
+  std::ofstream s(dir / "bad_0000.rad");
+  s << "#RADIOSS STARTER\n/BEGIN\nbad\n" << i10(2024) << i10(0) << "\n"
+    << "                  kg                  mm                  ms\n"
+    << "                  kg                  mm                  ms\n/NODE\n";
+  const double xyz[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int i = 0; i < 8; ++i) s << i10(i + 1) << f20(xyz[i][0]) << f20(xyz[i][1]) << f20(xyz[i][2]) << "\n";
+  s << "/BRICK/1\n" << i10(1);
+  for (int i = 1; i <= 8; ++i) s << i10(i);
+  s << "\n/PART/1\ncube\n" << i10(1) << i10(1) << "\n/PROP/TYPE14/1\nsolid\n" << i10(0) << "\n"
+    << "/MAT/LAW1/1\nelastic\n" << f20(1e-6) << "\n" << f20(0.01) << f20(0.3) << "\n"
+    << "/RWALL/PLANE/7\nwall\n" << i10(0) << i10(0) << i10(0) << i10(0) << "\n"
+    << f20(0) << f20(0) << "\n" << f20(0) << f20(0) << f20(-1) << "\n" << f20(0) << f20(0) << f20(-1)
+    << "\n/END\n";
+  s.close();
+  std::ofstream e(dir / "bad_0001.rad");
+  e << "/RUN/bad/1\n1.0\n/TFILE/4\n0.1\n";
+  e.close();
+  const std::string cmd = "cd '" + dir.string() + "' && '" + HBM_SOLVER_EXE + "' bad_0000.rad > run.log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  EXPECT_NE(rc, 0);
+  std::ifstream log(dir / "run.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("bad_0000.rad:"), std::string::npos) << text;
+  EXPECT_NE(text.find("/RWALL/PLANE/7"), std::string::npos) << text;
+  EXPECT_NE(text.find("M1 equals M"), std::string::npos) << text;
+#endif
 }
