@@ -46,6 +46,9 @@ void build_rigid_bodies(BuildContext& ctx) {
                                     " is not supported (0/1: centre of all masses, 2: of the secondaries)");
       ok = false;
     }
+    if (c->integer(l1, "Ikrem") != 0 || c->integer(l1, "surf_id") != 0)
+      ctx.warning(*c, "Ikrem and surf_id are not used by this engine (rigid walls and contact see the "
+                      "secondary nodes as ordinary nodes)");
     const std::vector<Index>* group = ctx.require_node_group(*c, l1, "grnod_id");
     if (!group || body->main == kNoIndex || !ok) continue;
     const auto main = static_cast<std::size_t>(body->main);

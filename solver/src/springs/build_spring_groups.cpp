@@ -131,6 +131,16 @@ bool read_property(BuildContext& ctx, const hbm::deck::Card& c, SpringProperty& 
       ctx.error(c, c.lines.at(0), "skew_id", "skew frames are not supported (use 0: global axes)");
       ok = false;
     }
+    // Failure variants beyond the uni-directional displacement criterion, and TYPE8's
+    // moment-equilibrium option, are not implemented: refuse rather than ignore them.
+    std::vector<std::string> unsupported{"Ifail", "Ifail2"};
+    if (p.type == SpringType::General) unsupported.push_back("Iequil");
+    for (const std::string& f : unsupported)
+      if (c.integer(0, f) != 0) {
+        ctx.error(c, c.lines.at(0), f, f + " = " + std::to_string(c.integer(0, f)) +
+                                           " is not supported (use 0)");
+        ok = false;
+      }
     p.dofs.resize(6);
     for (std::size_t d = 0; d < 6; ++d) ok = read_dof(ctx, c, 1 + 3 * d, dof_names(false, d), p.dofs[d]) && ok;
     const bool rot = p.type == SpringType::Beam || springs::has_rotational_law(p);

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Bad spring and rigid-body input stops hbm-solver in the build phase with exit code 1 and
+// a message naming file:line, keyword and field: an unsupported hardening flag, a
+// hardening rule without its curve, a rotational spring without inertia, a spring joining
+// a node to itself, a rigid body on an empty or overlapping node group. The decks are the
+// verification deck springs_mass_period / rigid_tumbling with one field changed.
+#include "springs_deck_runner.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Copy a verification deck with `from` replaced by `to` in the starter, run it, return the
+// exit code and the solver's output.
+int run_modified(const std::string& name, const std::string& tag, const std::string& from,
+                 const std::string& to, std::string& output) {
+  const std::filesystem::path src = std::filesystem::path(HBM_SOURCE_DIR) / "decks/examples" / name;
+  const std::filesystem::path dir = std::filesystem::current_path() / ("bad_" + tag);
+  std::filesystem::create_directories(dir);
+  std::string starter = slurp(src / (name + "_0000.rad"));
+  const auto pos = starter.find(from);
+  EXPECT_NE(pos, std::string::npos) << "pattern not in deck: " << from;
+  if (pos != std::string::npos) starter.replace(pos, from.size(), to);
+  std::ofstream(dir / (name + "_0000.rad")) << starter;
+  std::filesystem::copy_file(src / (name + "_0001.rad"), dir / (name + "_0001.rad"),
+                             std::filesystem::copy_options::overwrite_existing);
+#ifdef HBM_SOLVER_EXE
+  const std::string log = (dir / "log.txt").string();
+  const std::string cmd = std::string(HBM_SOLVER_EXE) + " " + (dir / (name + "_0000.rad")).string() +
+                          " --out " + (dir / "out").string() + " > " + log + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  output = slurp(log);
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+#else
+  ADD_FAILURE() << "hbm-solver was not built";
+  return -1;
+#endif
+}
+
+const std::string kDofLine = "         0         0         0         0         0";
+
+}  // namespace
+
+TEST(SpringDeckErrors, UnsupportedHardeningFlag) {
+  std::string out;
+  EXPECT_EQ(run_modified("springs_mass_period", "h5", kDofLine, "         0         5         0         0         0", out), 1);
+  EXPECT_NE(out.find("springs_mass_period_0000.rad:"), std::string::npos) << out;
+  EXPECT_NE(out.find("/PROP/TYPE4/1 field H"), std::string::npos) << out;
+  EXPECT_NE(out.find("not supported"), std::string::npos) << out;
+}
+
+TEST(SpringDeckErrors, HardeningWithoutCurve) {
+  std::string out;
+  EXPECT_EQ(run_modified("springs_mass_period", "h1", kDofLine, "         0         1         0         0         0", out), 1);
+  EXPECT_NE(out.find("/PROP/TYPE4/1 field fct_id1"), std::string::npos) << out;
+}
+
+TEST(SpringDeckErrors, SpringOnOneNode) {
+  std::string out;
+  EXPECT_EQ(run_modified("springs_mass_period", "self", "         1         1         2\n",
+                         "         1         2         2\n", out), 1);
+  EXPECT_NE(out.find("/SPRING/1 field n2"), std::string::npos) << out;
+  EXPECT_NE(out.find("to itself"), std::string::npos) << out;
+}
+
+TEST(SpringDeckErrors, RotationalSpringWithoutInertia) {
+  std::string out;
+  // springs_torsion: line 1 of the TYPE8 property, Inertia 4 -> 0.
+  EXPECT_EQ(run_modified("springs_torsion", "noinertia", "  2.000000000000E+00  4.000000000000E+00",
+                         "  2.000000000000E+00  0.000000000000E+00", out), 1);
+  EXPECT_NE(out.find("/PROP/TYPE8/1 field Inertia"), std::string::npos) << out;
+}
+
+TEST(RigidDeckErrors, SecondaryNodeInTwoBodies) {
+  std::string out;
+  // rigid_intermediate_axis: body 2's secondary group (nodes 10..17) -> body 1's nodes.
+  EXPECT_EQ(run_modified("rigid_intermediate_axis", "overlap",
+                         "        10        11        12        13        14        15        16        17",
+                         "         1         2         3         4         5         6         7         8", out), 1);
+  EXPECT_NE(out.find("/RBODY/2 field grnod_id"), std::string::npos) << out;
+  EXPECT_NE(out.find("already a node of another rigid body"), std::string::npos) << out;
+}
