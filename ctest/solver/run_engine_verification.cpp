@@ -366,3 +366,61 @@ assert last[0] < -1.0
   const std::string cmd = std::string(HBM_PYTHON) + " " + script.string() + " " + (r->out / "law34_impact.pvd").string();
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
 }
+
+// Constant-strain tetra and degenerate (prism) bricks under uniaxial stress:
+// sigma_xx = E ln(L) in every element (1%), other components small; cells as themselves.
+TEST(EngineVerification, TetraAndPrismUniaxial) {
+  auto r = run("tetra_prism_uniaxial");
+  ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
+  const Csv th = read_csv(r->out / "tetra_prism_uniaxial_TH_NODE_1.csv");
+  const double L = 1.0 + th.rows.back()[th.col("tetra corner DX")];
+  EXPECT_NEAR(th.rows.back()[th.col("prism corner DX")], L - 1.0, 1e-12);
+  const double E = 0.01, expect = E * std::log(L);
+  ASSERT_EQ(r->model.groups.size(), 2u);
+  for (const auto& g : r->model.groups) {
+    const auto& sg = dynamic_cast<const SolidGroup&>(*g);
+    for (std::size_t e = 0; e < sg.n_elements; ++e) {
+      double s[6];
+      sg.stress(e, s);
+      EXPECT_NEAR(s[0], expect, 0.01 * expect) << g->keyword << " element " << g->element_id[e];
+      for (int k = 1; k < 6; ++k) EXPECT_LT(std::abs(s[k]), 0.01 * expect) << g->keyword << " component " << k;
+      Index nodes[8];
+      int n = 0;
+      const VtkCellType t = g->vtk_cell(e, nodes, n);
+      EXPECT_EQ(t, g->nodes_per_element == 4 ? VtkCellType::Tetra : VtkCellType::Wedge);
+    }
+  }
+}
+
+// LAW36 tabulated plasticity: sigma = f(eps_p) before failure (1%); at EPS_p_max = 0.03
+// the element is deleted, counted for its part, its energy kept in the balance.
+TEST(EngineVerification, Law36TabulatedYieldAndErosion) {
+  const double E = 0.2;
+  auto yield = [](double ep) { return 3e-4 + 2e-3 * ep; };
+  {
+    auto r = run("law36_erosion_t2", deck_with_tstop("law36_erosion", 2.0));
+    ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
+    const Csv th = read_csv(r->out / "law36_erosion_TH_NODE_1.csv");
+    const double L = 1.0 + th.rows.back()[th.col("DX")];
+    double s[6];
+    solid(*r).stress(0, s);
+    const double ep = std::log(L) - s[0] / E;
+    EXPECT_GT(ep, 0.01);
+    EXPECT_NEAR(s[0], yield(ep), 0.01 * s[0]);
+    EXPECT_EQ(solid(*r).n_eroded, 0);
+  }
+  auto r = run("law36_erosion");
+  ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
+  const SolidGroup& g = solid(*r);
+  EXPECT_EQ(g.n_eroded, 1);
+  EXPECT_EQ(g.alive[0], 0);
+  EXPECT_GE(g.eps_p[0], 0.03);
+  EXPECT_GT(g.energy.eroded, 0.0);
+  EXPECT_EQ(g.energy.eroded, g.energy.internal);  // nothing more after deletion
+  const Csv th = read_csv(r->out / "law36_erosion_TH_PART_2.csv");
+  EXPECT_EQ(th.rows.back()[th.col("part 1 cube ER")], 1.0);
+  std::ifstream listing(r->out / "law36_erosion_0001.out");
+  std::stringstream ss;
+  ss << listing.rdbuf();
+  EXPECT_NE(ss.str().find("element 1 of part 1 'cube' deleted at t = "), std::string::npos);
+}

@@ -420,7 +420,99 @@ def inverted():
     d.write()
 
 
+def tetra_prism_uniaxial():
+    E, nu, rho = 0.01, 0.3, 1e-6
+    d = Deck("tetra_prism_uniaxial", [
+        "tetra_prism_uniaxial: a unit cube of 6 /TETRA4 (part 1) and a unit cube of 2",
+        "degenerate /BRICK prisms (n4 = n3, n8 = n7; part 2), LAW1, pulled to 5% strain in",
+        "5 ms under uniaxial stress (symmetry faces x = 0, y = lower face, z = 0).",
+        "What it shows: constant-strain tetra and degenerate brick give sigma_xx = E ln(L/L0)",
+        "in every element (1%), other stresses ~0; the animation writes tetra and wedge cells.",
+        RUN.format("tetra_prism_uniaxial"), CHECK])
+    grids = []
+    for y0 in (0.0, 2.0):
+        g = {}
+        for k in range(2):
+            for j in range(2):
+                for i in range(2):
+                    g[(i, j, k)] = d.node(float(i), y0 + j, float(k))
+        grids.append(g)
+    g = grids[0]
+    def vol(ns):
+        p = [d.nodes[n] for n in ns]
+        a = [p[1][t] - p[0][t] for t in range(3)]
+        b = [p[2][t] - p[0][t] for t in range(3)]
+        c = [p[3][t] - p[0][t] for t in range(3)]
+        return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]))
+    tets = []
+    for path in ((1, 0, 0), (0, 1, 0), (0, 0, 1)):
+        pass
+    corners = [((0, 0, 0), (1, 0, 0), (1, 1, 0)), ((0, 0, 0), (1, 0, 0), (1, 0, 1)), ((0, 0, 0), (0, 1, 0), (1, 1, 0)),
+               ((0, 0, 0), (0, 1, 0), (0, 1, 1)), ((0, 0, 0), (0, 0, 1), (1, 0, 1)), ((0, 0, 0), (0, 0, 1), (0, 1, 1))]
+    for a, b, c in corners:
+        ns = [g[a], g[b], g[c], g[(1, 1, 1)]]
+        if vol(ns) < 0:
+            ns[1], ns[2] = ns[2], ns[1]
+        tets.append((d.next_elem, ns))
+        d.next_elem += 1
+    h = grids[1]
+    prisms = [(d.next_elem, [h[(0, 0, 0)], h[(1, 0, 0)], h[(1, 1, 0)], h[(1, 1, 0)], h[(0, 0, 1)], h[(1, 0, 1)], h[(1, 1, 1)], h[(1, 1, 1)]]),
+              (d.next_elem + 1, [h[(0, 0, 0)], h[(1, 1, 0)], h[(0, 1, 0)], h[(0, 1, 0)], h[(0, 0, 1)], h[(1, 1, 1)], h[(0, 1, 1)], h[(0, 1, 1)]])]
+    d.law1(1, "elastic", rho, E, nu)
+    d.prop14(1, "solid", qa=0.0, qb=0.0)
+    d.part(1, "tetra cube", 1, 1)
+    d.part(2, "prism cube", 1, 1)
+    d.card("/TETRA4/1", None, [i10(e) + "".join(i10(n) for n in ns) for e, ns in tets])
+    d.bricks(2, prisms)
+    allg = {**{("a",) + k: v for k, v in g.items()}, **{("b",) + k: v for k, v in h.items()}}
+    d.grnod(1, "x0", [v for k, v in allg.items() if k[1] == 0])
+    d.grnod(2, "ylow", [v for k, v in allg.items() if k[2] == 0])
+    d.grnod(3, "z0", [v for k, v in allg.items() if k[3] == 0])
+    d.grnod(4, "x1", [v for k, v in allg.items() if k[1] == 1])
+    d.bcs(1, "x0", "100", 1)
+    d.bcs(2, "ylow", "010", 2)
+    d.bcs(3, "z0", "001", 3)
+    d.funct(1, "ramp", [(0, 0), (0.5, 1), (5.0, 1)])
+    d.impvel(1, "pull", 1, "X", 4, 0.05 / (0.95 * 5.0))
+    d.th_nodes(1, "corner", ["DX"], [(g[(1, 1, 1)], "tetra corner"), (h[(1, 1, 1)], "prism corner")])
+    d.engine(5.0, 0.05, anim=1.0, print_every=1000)
+    d.write()
+
+
+def law36_erosion():
+    E, nu, rho = 0.2, 0.3, 7.85e-6
+    d = Deck("law36_erosion", [
+        "law36_erosion: one LAW36 brick (tabulated yield curve: 3e-4 GPa at eps_p = 0 rising",
+        "linearly to 5e-4 GPa at eps_p = 0.1), EPS_p_max = 0.03, pulled to 6% strain in 5 ms.",
+        "What it shows: before failure sigma_xx = f(eps_p), eps_p = ln(L) - sigma/E (1%);",
+        "the element is deleted when eps_p reaches 0.03 (counted for part 1, its internal",
+        "energy kept in the balance), the run ends normally.", RUN.format("law36_erosion"), CHECK])
+    grid, el = d.block(1, 1, 1, 1.0, 1.0, 1.0)
+    d.funct(2, "yield curve", [(0.0, 3.0e-4), (0.1, 5.0e-4), (1.0, 5.0e-4)])
+    d.card("/MAT/LAW36/1", "tabulated", [f20(rho), f20(E) + f20(nu) + f20(0.03) + f20(0) + f20(0),
+                                         i10(1) + i10(0) + f20(0) + f20(0) + f20(0), "",
+                                         i10(2), f20(1.0), f20(0.0)])
+    d.prop14(1, "solid", qa=0.0, qb=0.0)
+    d.part(1, "cube", 1, 1)
+    d.bricks(1, el)
+    d.grnod(1, "x0", face(grid, 0, 0))
+    d.grnod(2, "y0", face(grid, 1, 0))
+    d.grnod(3, "z0", face(grid, 2, 0))
+    d.grnod(4, "x1", face(grid, 0, 1))
+    d.bcs(1, "x0", "100", 1)
+    d.bcs(2, "y0", "010", 2)
+    d.bcs(3, "z0", "001", 3)
+    d.funct(1, "ramp", [(0, 0), (0.5, 1), (5.0, 1)])
+    d.impvel(1, "pull", 1, "X", 4, 0.06 / (0.95 * 5.0))
+    d.th_nodes(1, "corner", ["DX"], [(grid[(1, 1, 1)], "corner")])
+    d.th_parts(2, "part", ["IE", "ER"], [1])
+    d.engine(5.0, 0.05, print_every=1000)
+    d.write()
+
+
 if __name__ == "__main__":
+    tetra_prism_uniaxial()
+    law36_erosion()
     wave_bar()
     patch_distorted()
     uniaxial_law1()
