@@ -73,6 +73,9 @@ PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary
   prev_force_.assign(ns, V3{});
   prev_segment_.assign(ns, kNoIndex);
   prev_weight_.assign(ns, {0, 0, 0, 0});
+  prev_damping_.assign(ns, 0.0);
+  prev_vn_.assign(ns, 0.0);
+  prev_normal_.assign(ns, V3{});
   pair_friction_stored_.assign(ns, 0.0);
 
   // Margin: half the mean segment edge unless given.
@@ -250,8 +253,15 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   critical_step_ = std::numeric_limits<double>::infinity();
   // Work of last cycle's forces over v^{n-1/2} (first half of the trapezoid).
   double power_prev = 0;
-  for (std::size_t i = 0; i < secondary_.size(); ++i)
+  for (std::size_t i = 0; i < secondary_.size(); ++i) {
     power_prev += pair_power(nodes, i, prev_force_[i], prev_segment_[i], prev_weight_[i]);
+    // Damping force of the last cycle: its work over that step is f_d . (v^{n-1/2} +
+    // v^{n+1/2})/2 dt (central difference), known only now that v^{n+1/2} is.
+    if (prev_segment_[i] != kNoIndex && prev_damping_[i] != 0.0) {
+      const double vn_now = pair_power(nodes, i, prev_normal_[i], prev_segment_[i], prev_weight_[i]);
+      damping_dissipated_ += -prev_damping_[i] * 0.5 * (prev_vn_[i] + vn_now) * dt;
+    }
+  }
   double power_now = 0;
   if (time < p_.tstart || time > p_.tstop) {
     std::fill(tangential_.begin(), tangential_.end(), V3{});
@@ -368,7 +378,9 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
       fd = -fn_el;
       fn = 0;
     }
-    damping_dissipated_ += -fd * vn * dt;
+    prev_damping_[i] = fd;  // dissipation accounted next cycle (mid-step velocity)
+    prev_vn_[i] = vn;
+    prev_normal_[i] = best_n;
 
     // Friction: elastic-plastic tangential spring of stiffness k_now.
     V3 ft{};

@@ -155,6 +155,8 @@ class PenaltyContact {
   std::vector<V3> prev_force_;
   std::vector<Index> prev_segment_;
   std::vector<std::array<double, 4>> prev_weight_;
+  std::vector<double> prev_damping_, prev_vn_;  // damping force (along prev normal), v_n
+  std::vector<V3> prev_normal_;
 };
 
 }  // namespace hbm::solver::contact
