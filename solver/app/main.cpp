@@ -45,6 +45,6 @@ int main(int argc, char** argv) {
   opt.threads = threads;
   opt.console = &std::cout;
   const hbm::solver::RunResult r = hbm::solver::run_deck(deck, opt, std::cerr);
-  if (r.exit_code == 1) std::cerr << "hbm-solver: " << r.message << "\n";
+  if (r.exit_code == 3) std::cerr << "hbm-solver: run stopped: " << r.message << "\n";
   return r.exit_code;
 }

@@ -47,12 +47,12 @@ void bench_once(std::size_t n_elements, int threads, std::ostream& out) {
   // against other processes sharing the cores.
   double cpu_forces = 0.0;
   if (threads == 1) {
-    timespec a{}, b{};
+    timespec ta{}, tb{};
     GroupStepResult res;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ta);
     for (int k = 0; k < cycles; ++k) m.groups[0]->compute_forces(c.step, m.nodes, res);
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
-    cpu_forces = static_cast<double>(b.tv_sec - a.tv_sec) + 1e-9 * static_cast<double>(b.tv_nsec - a.tv_nsec);
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &tb);
+    cpu_forces = static_cast<double>(tb.tv_sec - ta.tv_sec) + 1e-9 * static_cast<double>(tb.tv_nsec - ta.tv_nsec);
   }
   const double ne = static_cast<double>(m.groups[0]->n_elements) * cycles;
   const double nn = static_cast<double>(m.nodes.n_nodes) * cycles;
