@@ -76,6 +76,16 @@ class Parser {
   bool starter() const { return deck_.section == Section::Starter; }
 
   std::vector<std::uint32_t> following_;  // per keyword line: data lines until the next keyword
+
+  // Default values of a row layout, built once per layout (rows are copied from it).
+  std::vector<std::pair<const LineSpec*, std::vector<Value>>> defaults_cache_;
+  const std::vector<Value>& defaults_of(const LineSpec& ls) {
+    for (const auto& [spec, values] : defaults_cache_)
+      if (spec == &ls) return values;
+    std::vector<Value> v;
+    for (const FieldSpec& f : ls.fields) v.push_back(default_value(f));
+    return defaults_cache_.emplace_back(&ls, std::move(v)).second;
+  }
   std::size_t line_index_ = 0;
 
   // Current card state.
@@ -349,7 +359,8 @@ class Parser {
     r.layout = &ls;
     r.loc = l.loc;
     r.first = static_cast<std::uint32_t>(c.values.size());
-    for (const FieldSpec& f : ls.fields) c.values.push_back(default_value(f));
+    const std::vector<Value>& defaults = defaults_of(ls);
+    c.values.insert(c.values.end(), defaults.begin(), defaults.end());
     c.lines.push_back(r);
     const std::size_t before = sink_.errors();
     parse_into(c, c.lines.back(), l);
