@@ -9,13 +9,16 @@
 //                           within 1e-4; KE = 0.5 M v0^2 + 0.5 Jxx Omega^2 with the
 //                           closed-form M, Jxx of the corner masses (1e-9)
 //  rigid_spring_impact      momentum and angular momentum of mass + body conserved (1e-8),
-//                           energy error below 1e-4
+//                           energy error below 1e-4; its time histories are bitwise
+//                           identical with 1 and 2 threads
 #include "springs_deck_runner.hpp"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 using hbm::solver::testing::read_th;
 using hbm::solver::testing::run_deck;
@@ -130,4 +133,18 @@ TEST(RigidDecks, SpringImpactConservesMomentum) {
   EXPECT_LT(dp, 1e-8);
   EXPECT_LT(dj, 1e-8);
   EXPECT_LT(derr, 1e-4);
+}
+
+TEST(RigidDecks, SpringImpactIsBitwiseIdenticalWithOneAndTwoThreads) {
+  const auto one = run_deck("rigid_spring_impact", "--threads 1", "_t1");
+  const auto two = run_deck("rigid_spring_impact", "--threads 2", "_t2");
+  ASSERT_FALSE(one.empty());
+  ASSERT_FALSE(two.empty());
+  for (const std::string f : {"rigid_spring_impact_TH_NODE_1.csv", "rigid_spring_impact_TH_RBODY_1.csv"}) {
+    std::stringstream a, b;
+    a << std::ifstream(one / f).rdbuf();
+    b << std::ifstream(two / f).rdbuf();
+    EXPECT_FALSE(a.str().empty());
+    EXPECT_TRUE(a.str() == b.str()) << f << " differs between 1 and 2 threads";
+  }
 }

@@ -52,16 +52,19 @@ inline ThTable read_th(const std::filesystem::path& path) {
   return t;
 }
 
-// Run decks/examples/<name>/<name>_0000.rad; returns the output folder (empty on failure).
-inline std::filesystem::path run_deck(const std::string& name) {
+// Run decks/examples/<name>/<name>_0000.rad (extra command-line arguments `args`, output
+// folder suffix `tag`); returns the output folder (empty on failure).
+inline std::filesystem::path run_deck(const std::string& name, const std::string& args = "",
+                                      const std::string& tag = "") {
 #ifndef HBM_SOLVER_EXE
   ADD_FAILURE() << "hbm-solver was not built";
   return {};
 #else
-  const std::filesystem::path out = std::filesystem::current_path() / ("out_" + name);
+  const std::filesystem::path out = std::filesystem::current_path() / ("out_" + name + tag);
   std::filesystem::remove_all(out);
   const std::string cmd = std::string(HBM_SOLVER_EXE) + " " + HBM_SOURCE_DIR + "/decks/examples/" + name + "/" +
-                          name + "_0000.rad --out " + out.string() + " > " + out.string() + ".log 2>&1";
+                          name + "_0000.rad --out " + out.string() + " " + args + " > " + out.string() +
+                          ".log 2>&1";
   const int rc = std::system(cmd.c_str());
   EXPECT_EQ(rc, 0) << cmd << " (see " << out.string() << ".log)";
   return rc == 0 ? out : std::filesystem::path{};
