@@ -197,7 +197,7 @@ void build_type2(BuildContext& ctx, const Card& c, const SurfaceTable& surfs) {
   if (!untied.empty()) {
     std::string list;
     for (std::size_t k = 0; k < std::min<std::size_t>(untied.size(), 10); ++k)
-      list += " " + std::to_string(ctx.nodes().user_id[static_cast<std::size_t>(untied[k])]);
+      list.append(" ").append(std::to_string(ctx.nodes().user_id[static_cast<std::size_t>(untied[k])]));
     ctx.warning(c, std::to_string(untied.size()) + " secondary node(s) farther than dsearch from the main "
                    "surface are not tied:" + list + (untied.size() > 10 ? " ..." : ""));
   }

@@ -34,7 +34,7 @@ inline FieldRef find_field(const hbm::deck::Card& card, std::size_t k,
       }
   if (!r.spec) {
     std::string msg = "contact: " + std::string(card.keyword()) + " line " + std::to_string(k + 1) + " has none of the fields";
-    for (std::string_view n : names) msg += " " + std::string(n);
+    for (std::string_view n : names) msg.append(" ").append(n);
     throw std::logic_error(msg);
   }
   if (k < card.lines.size() && card.lines[k].layout == &ls) r.row = &card.lines[k];
@@ -78,7 +78,7 @@ inline FieldRef find_any(const hbm::deck::Card& card, std::initializer_list<std:
             return r;
           }
   std::string msg = "contact: " + std::string(card.keyword()) + " has none of the fields";
-  for (std::string_view n : names) msg += " " + std::string(n);
+  for (std::string_view n : names) msg.append(" ").append(n);
   throw std::logic_error(msg);
 }
 inline double real_any(const hbm::deck::Card& card, std::initializer_list<std::string_view> names) {
@@ -109,7 +109,7 @@ inline const hbm::deck::Value& row_value(const hbm::deck::Card& card, const hbm:
     for (const hbm::deck::FieldSpec& f : row.layout->fields)
       if (f.name == n) return card.value(row, n);
   std::string msg = "contact: " + std::string(card.keyword()) + " row has none of the fields";
-  for (std::string_view n : names) msg += " " + std::string(n);
+  for (std::string_view n : names) msg.append(" ").append(n);
   throw std::logic_error(msg);
 }
 
