@@ -209,8 +209,11 @@ TEST(ContactDecks, BlockSlidingDeceleratesAtMuG) {
   // Wall: tangential / normal force = mu while sliding (force on the wall).
   const Csv w = read_csv(fs::path(name) / (name + "_TH_RWALL_2.csv"));
   const std::vector<double> tw = w.column(0), fn = w.column(w.col("FNZ")), ft = w.column(w.col("FTX"));
-  for (std::size_t k = 0; k < tw.size(); ++k)
-    if (tw[k] > 0.1 && tw[k] < 0.8 && std::abs(fn[k]) > 0) EXPECT_NEAR(ft[k] / std::abs(fn[k]), mu, 1e-3 * mu);
+  for (std::size_t k = 0; k < tw.size(); ++k) {
+    if (tw[k] > 0.1 && tw[k] < 0.8 && std::abs(fn[k]) > 0) {
+      EXPECT_NEAR(ft[k] / std::abs(fn[k]), mu, 1e-3 * mu);
+    }
+  }
 }
 
 TEST(ContactDecks, TiedBarTransmitsTheWave) {
