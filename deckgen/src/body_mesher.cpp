@@ -23,10 +23,16 @@ double hollow_ellipse_area(double height, double width, double t) {
   return M_PI * (a * b - (a - t) * (b - t));
 }
 
-double equivalent_rib_thickness(double height, double width, double t, double band_height) {
+double hollow_ellipse_inertia(double height, double width, double t) {
   double a = width / 2, b = height / 2;
-  double I = M_PI / 4 * (b * a * a * a - (b - t) * std::pow(a - t, 3));
-  return std::cbrt(12 * I / band_height);
+  return M_PI / 4 * (b * a * a * a - (b - t) * std::pow(a - t, 3));
+}
+
+double equivalent_rib_thickness(double height, double width, double cortical, double band_height) {
+  (void)band_height;
+  // Strip of thickness t and modulus E_eq with E_eq h t = E A and E_eq h t^3 / 12 = E I:
+  // t = sqrt(12 I / A), independent of the strip height h.
+  return std::sqrt(12 * hollow_ellipse_inertia(height, width, cortical) / hollow_ellipse_area(height, width, cortical));
 }
 
 namespace {
@@ -178,6 +184,7 @@ class Builder {
   Eigen::Vector3d moved(const std::string& link, const Eigen::Vector3d& p) const { return g_.skeleton.motion(link) * p; }
 
   void build_torso();
+  void calibrate_disc(int layer, int part_index, double k_n_per_mm);
   void build_neck();
   void build_ribcage();
   void build_pelvis();
@@ -347,6 +354,7 @@ void Builder::build_torso() {
       skin_quad(skin.at(L.region), skin_tri.at(L.region), q);
       torso_skin_.push_back(q);
     }
+    if (L.kind == LayerKind::Disc) calibrate_disc(l, column, g_.disc_stiffness.at(L.vertebra));
   }
   // Landmarks for the trunk CoG reference: centres of the skin curve at region boundaries.
   auto centre = [&](const std::string& level_name) {
@@ -362,6 +370,27 @@ void Builder::build_torso() {
   lm_.boundary_centres["T9_lower"] = centre("T9_lower");
   lm_.boundary_centres["L3_lower"] = centre("L3_lower");
   lm_.boundary_centres["seat"] = centre("seat");
+}
+
+// Young's modulus of a disc part from its axial stiffness: E = k h / A over the disc
+// column cells (A: mean of the bottom and top face areas, h = V / A).
+void Builder::calibrate_disc(int l, int part_index, double k) {
+  double area = 0, volume = 0;
+  for (int r = 0; r < 2; ++r)
+    for (int j = torso_->back() - 1; j <= torso_->back(); ++j) {
+      auto h = torso_->ring_cell(l, r, j);
+      auto P = [&](int i) { return m_.nodes[static_cast<std::size_t>(h[static_cast<std::size_t>(i)])]; };
+      double ab = 0.5 * (P(2) - P(0)).cross(P(3) - P(1)).norm(), at = 0.5 * (P(6) - P(4)).cross(P(7) - P(5)).norm();
+      double a = 0.5 * (ab + at);
+      // height: mean of the four vertical edges
+      double hh = 0.25 * ((P(4) - P(0)).norm() + (P(5) - P(1)).norm() + (P(6) - P(2)).norm() + (P(7) - P(3)).norm());
+      area += a;
+      volume += a * hh;
+    }
+  double h = volume / area;
+  FeMaterial& mat = m_.materials[static_cast<std::size_t>(m_.parts[static_cast<std::size_t>(part_index)].material)];
+  mat.E = k * h / area * 1e-3;  // N/mm * mm / mm^2 = MPa -> GPa
+  mat.source += "; E calibrated to k = " + std::to_string(static_cast<int>(k)) + " N/mm (disc_stiffness.csv)";
 }
 
 // --- rib cage -----------------------------------------------------------------------------
@@ -413,10 +442,12 @@ void Builder::build_ribcage() {
         for (const auto& tri : split(l, jj, left)) elems.push_back({tri, teq});
       }
     }
-    // Density that keeps the real rib mass (cortex only; the trabecular core is light).
+    // Modulus and density scaled by real section area / strip section (h t): axial stiffness
+    // E A, bending stiffness E I and mass of the real rib, unchanged wave speed.
     FeMaterial rm = convert(rib_spec, "rib_" + std::string(rib.index < 10 ? "0" : "") + std::to_string(rib.index));
     rm.rho *= real_mass_area / model_volume;
-    rm.source += "; density scaled by real/equivalent section area (calibration.md)";
+    rm.E *= real_mass_area / model_volume;
+    rm.source += "; E and density scaled by real/strip section area (equivalent strip, calibration.md)";
     int mi = m_.add_material(rm);
     int p = part(rm.name, ElementKind::Tria, mi, "thorax", "ribs");
     for (const auto& e : elems) {
@@ -434,7 +465,7 @@ void Builder::build_ribcage() {
           bool left = side == 0;
           int jj = left ? j : N - 1 - j;
           auto [bh, len] = band(l, jj);
-          double teq = std::cbrt(12 * I / bh);
+          double teq = std::sqrt(12 * I / A);
           ra += A * len;
           mv += bh * len * teq;
           for (const auto& tri : split(l, jj, left)) ce.push_back({tri, teq});
@@ -445,7 +476,8 @@ void Builder::build_ribcage() {
         cart_part = part("costal_cartilage", ElementKind::Tria, cart_mat, "thorax", "cartilage");
         cart_ratio = mv > 0 ? ra / mv : 1;
         m_.materials[static_cast<std::size_t>(cart_mat)].rho *= cart_ratio;
-        m_.materials[static_cast<std::size_t>(cart_mat)].source += "; density scaled by real/equivalent section area";
+        m_.materials[static_cast<std::size_t>(cart_mat)].E *= cart_ratio;
+        m_.materials[static_cast<std::size_t>(cart_mat)].source += "; E and density scaled by real/strip section area";
       }
       for (const auto& e : ce) {
         tria(cart_part, e.t, e.th);
@@ -456,11 +488,15 @@ void Builder::build_ribcage() {
   // Sternum: front cells from the rib-1 band to the rib-7 band.
   const auto& ss = g_.shell_sections.at("sternum");
   double T = ss.total_thickness, tc = ss.cortical;
-  double teq = std::cbrt(T * T * T - std::pow(T - 2 * tc, 3));
+  // Sandwich plate (two cortices tc, core): per unit width I = (T^3 - (T - 2 tc)^3) / 12,
+  // A = 2 tc; equivalent shell t = sqrt(12 I / A), E_eq = E A / t, density keeps the mass.
+  double Iw = (T * T * T - std::pow(T - 2 * tc, 3)) / 12, Aw = 2 * tc;
+  double teq = std::sqrt(12 * Iw / Aw);
   FeMaterial sm = convert(g_.material("sternum_cortical"), "sternum");
   double rho_c = sm.rho, rho_core = ss.core_density * kDensity;
+  sm.E *= Aw / teq;
   sm.rho = (2 * tc * rho_c + (T - 2 * tc) * rho_core) / teq;
-  sm.source += "; sandwich-equivalent thickness and density (shell_sections.csv)";
+  sm.source += "; sandwich-equivalent thickness, modulus and density (shell_sections.csv)";
   int smi = m_.add_material(sm);
   int sp = part("sternum", ElementKind::Tria, smi, "thorax", "sternum", teq);
   int l1 = layer_of_body("T1"), l7 = layer_of_body("T7");

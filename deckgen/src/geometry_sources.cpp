@@ -264,7 +264,8 @@ std::vector<SegmentTarget> read_targets(const std::filesystem::path& file) {
     s.mass = t.number_in(r, "mass_kg", 0.01, 200);
     s.cog_mode = t.text(r, "cog_mode");
     if (s.cog_mode == "axis") s.axis_fraction = t.number_in(r, "axis_fraction", 0, 1);
-    else if (s.cog_mode != "link") t.fail(r, "cog_mode", "expected link or axis");
+    else if (s.cog_mode != "link" && s.cog_mode != "none") t.fail(r, "cog_mode", "expected link, axis or none");
+    s.check_mass = t.integer(r, "check_mass") != 0;
     s.check_cog = t.integer(r, "check_cog") != 0;
     s.source = t.text(r, "source");
     if (s.source.empty()) t.fail(r, "source", "every target needs its source");
@@ -299,6 +300,22 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
   return out;
 }
 
+std::map<std::string, double> read_disc_stiffness(const std::filesystem::path& file) {
+  Table t = Table::read(file);
+  std::map<std::string, double> out;
+  for (const auto& r : t.rows()) {
+    std::string d = t.text(r, "disc");
+    if (out.count(d)) t.fail(r, "disc", "duplicate disc '" + d + "'");
+    out[d] = t.number_in(r, "k_axial_N_per_mm", 1, 1e6);
+    if (t.text(r, "source").empty()) t.fail(r, "source", "every stiffness needs its source");
+  }
+  std::vector<std::string> need{"T1T2", "T2T3", "T3T4", "T4T5", "T5T6", "T6T7", "T7T8", "T8T9", "T9T10", "T10T11", "T11T12",
+                                "T12L1", "L1L2", "L2L3", "L3L4", "L4L5", "L5S1"};
+  for (const auto& n : need)
+    if (!out.count(n)) throw SourceError(file, t.rows().back().line, "disc", "disc '" + n + "' is missing");
+  return out;
+}
+
 }  // namespace
 
 const VertebraLandmarks& GeometrySources::vertebra(const std::string& name) const {
@@ -324,6 +341,7 @@ GeometrySources load_geometry(const std::filesystem::path& dir) {
   g.joints = read_joints(dir / "joints.csv");
   g.targets = read_targets(dir / "segment_targets.csv");
   g.shell_sections = read_shell_sections(dir / "shell_sections.csv");
+  g.disc_stiffness = read_disc_stiffness(dir / "disc_stiffness.csv");
   g.skeleton = Skeleton::read(dir / "skeleton.urdf");
   return g;
 }

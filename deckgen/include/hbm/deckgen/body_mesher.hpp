@@ -33,12 +33,12 @@ struct ModelLandmarks {
 
 FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks = nullptr);
 
-// Equivalent shell thickness (mm) of a hollow elliptic section (semi-axes a across the
-// strip thickness direction, b along its height, cortex t) with the same bending
-// stiffness about the height axis as a strip of height h: I = pi/4 (b a^3 - (b-t)(a-t)^3),
-// t_eq = (12 I / h)^(1/3).
+// Equivalent strip of a hollow elliptic rib section (semi-axes a = width/2 across the strip,
+// b = height/2 along it, cortex t): I = pi/4 (b a^3 - (b-t)(a-t)^3), A = pi (ab - (a-t)(b-t)).
+// A strip of thickness t_eq = sqrt(12 I / A) and modulus/density scaled by A / (h t_eq) has
+// the rib's axial stiffness, bending stiffness (about the height axis) and mass.
 double equivalent_rib_thickness(double height, double width, double cortical, double band_height);
-// Real cross-section area of that hollow section (mm^2).
 double hollow_ellipse_area(double height, double width, double cortical);
+double hollow_ellipse_inertia(double height, double width, double cortical);
 
 }  // namespace hbm::deckgen

@@ -81,7 +81,7 @@ struct SegmentTarget {
   double mass = 0;
   std::string cog_mode;  // link | axis
   double axis_fraction = 0;
-  bool check_cog = false;
+  bool check_mass = true, check_cog = false;
   std::string source;
   int line = 0;
 };
@@ -104,6 +104,7 @@ struct GeometrySources {
   std::map<std::string, JointSpec> joints;
   std::vector<SegmentTarget> targets;
   std::map<std::string, ShellSection> shell_sections;
+  std::map<std::string, double> disc_stiffness;  // N/mm, by disc name (T1T2 ... L5S1)
   Skeleton skeleton;
 
   const VertebraLandmarks& vertebra(const std::string& name) const;

@@ -76,7 +76,7 @@ struct MassRow {
   double mass = 0, target_mass = 0;
   Eigen::Vector3d cog = Eigen::Vector3d::Zero(), target_cog = Eigen::Vector3d::Zero();
   Eigen::Vector3d principal = Eigen::Vector3d::Zero(), target_principal = Eigen::Vector3d::Zero();
-  bool check_cog = false, has_target_inertia = false;
+  bool check_mass = true, check_cog = false, has_target_inertia = false;
   double mass_error() const { return (mass - target_mass) / target_mass; }
   double cog_error() const { return (cog - target_cog).norm(); }
 };
