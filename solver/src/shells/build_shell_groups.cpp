@@ -32,6 +32,15 @@ using shells::ShellLaw;
 using shells::ShellMaterial;
 using shells::ShellSection;
 
+// Message text by appending (GCC 12 warns falsely, -Wrestrict, on literal + std::string).
+template <class... Parts>
+std::string cat(const Parts&... parts) {
+  std::string s;
+  (s.append(std::string_view(parts)), ...);
+  return s;
+}
+std::string num(std::int64_t v) { return std::to_string(v); }
+
 bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMaterial& out) {
   const std::string_view kw = m.keyword();
   out.id = m.id;
@@ -86,17 +95,17 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
     pl.eps_p_max = epm > 0 ? epm : inf;
     const auto n = m.integer(2, "N_funct");
     for (int k = 1; k <= n; ++k) {
-      const std::string f = "fct_ID" + std::to_string(k);
+      const std::string f = cat("fct_ID", num(k));
       const std::int64_t fid = m.integer(4, f);
       const FunctionCurve* fc = ctx.function(fid);
       if (!fc) {
         ctx.error(m, m.lines.size() > 4 ? m.lines[4] : m.lines.back(), f,
-                  "no function " + std::to_string(fid));
+                  cat("no function ", num(fid)));
         return false;
       }
       pl.tab.curves.push_back(fc);
-      pl.tab.scales.push_back(m.real(5, "Fscale" + std::to_string(k)));
-      pl.tab.rates.push_back(m.real(6, "EPS_dot" + std::to_string(k)));
+      pl.tab.scales.push_back(m.real(5, cat("Fscale", num(k))));
+      pl.tab.rates.push_back(m.real(6, cat("EPS_dot", num(k))));
     }
     for (std::size_t k = 1; k < pl.tab.rates.size(); ++k)
       if (!(pl.tab.rates[k] > pl.tab.rates[k - 1])) {
@@ -104,8 +113,7 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
         return false;
       }
   } else {
-    ctx.error(m, std::string("material ") + std::string(kw) +
-                     " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36)");
+    ctx.error(m, cat("material ", kw, " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36)"));
     return false;
   }
   const std::string_view why = out.check();
@@ -119,8 +127,8 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
 bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSection& s) {
   const hbm::deck::Card* p = part.prop_card;
   if (!p || p->keyword() != "/PROP/TYPE1") {
-    ctx.error(*part.part_card, "part " + std::to_string(part.id) + " has shell elements: its "
-                               "property must be a /PROP/TYPE1");
+    ctx.error(*part.part_card,
+              cat("part ", num(part.id), " has shell elements: its property must be a /PROP/TYPE1"));
     return false;
   }
   s.prop_id = p->id;
@@ -128,15 +136,14 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
     const auto ishell = p->integer(0, "Ishell");
     if (ishell < 0 || ishell > 4) {
       ctx.error(*p, p->lines.at(0), "Ishell",
-                "Ishell = " + std::to_string(ishell) +
-                    " not supported (0-4: Belytschko-Tsay with hourglass stiffness)");
+                cat("Ishell = ", num(ishell), " not supported (0-4: Belytschko-Tsay with hourglass stiffness)"));
       return false;
     }
   } else {
     const auto ish3n = p->integer(0, "Ish3n");
     if (!(ish3n == 0 || ish3n == 1 || ish3n == 2 || ish3n == 30 || ish3n == 31)) {
       ctx.error(*p, p->lines.at(0), "Ish3n",
-                "Ish3n = " + std::to_string(ish3n) + " not supported (0, 1, 2, 30, 31: CST + DKT)");
+                cat("Ish3n = ", num(ish3n), " not supported (0, 1, 2, 30, 31: CST + DKT)"));
       return false;
     }
   }
@@ -194,7 +201,7 @@ void build_shell_groups(BuildContext& ctx) {
       const auto& cards = by_part[part_id];
       const Index part = ctx.part_index(part_id);
       if (part == kNoIndex) {
-        ctx.error(*cards.front(), "no part " + std::to_string(part_id));
+        ctx.error(*cards.front(), cat("no part ", num(part_id)));
         continue;
       }
       const Part& p = ctx.part(part);
@@ -203,7 +210,7 @@ void build_shell_groups(BuildContext& ctx) {
       g->part = part;
       g->nodes_per_element = static_cast<std::size_t>(npe);
       if (!p.mat_card) {
-        ctx.error(*cards.front(), "part " + std::to_string(part_id) + " has no material");
+        ctx.error(*cards.front(), cat("part ", num(part_id), " has no material"));
         continue;
       }
       if (!read_shell_material(ctx, *p.mat_card, g->data.mat)) continue;
@@ -215,7 +222,7 @@ void build_shell_groups(BuildContext& ctx) {
           const auto& row = c->row(r);
           g->element_id.push_back(c->integer(row, "id"));
           for (int i = 0; i < npe; ++i) {
-            const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
+            const Index n = ctx.require_node(*c, row, cat("n", num(i + 1)));
             ok = ok && n != kNoIndex;
             g->connectivity.push_back(n);
           }
@@ -231,9 +238,8 @@ void build_shell_groups(BuildContext& ctx) {
       g->n_elements = g->element_id.size();
       const Index bad = g->initialize(ctx.nodes());
       if (bad != kNoIndex) {
-        ctx.error(*cards.front(), "shell element " +
-                                      std::to_string(g->element_id[static_cast<std::size_t>(bad)]) +
-                                      " has zero area (coincident nodes?)");
+        ctx.error(*cards.front(), cat("shell element ", num(g->element_id[static_cast<std::size_t>(bad)]),
+                                      " has zero area (coincident nodes?)"));
         continue;
       }
       double part_mass = 0.0;
