@@ -102,15 +102,10 @@ PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary
     max_gap_ = std::max(max_gap_, g);
   }
 
-  // Fixed-step stiffness cap per secondary node.
-  k_cap_.assign(ns, std::numeric_limits<double>::infinity());
-  if (p_.fixed_dt > 0) {
-    const double r = p_.tsca / p_.fixed_dt;
-    for (std::size_t i = 0; i < ns; ++i) {
-      const double m = nodes.mass0[static_cast<std::size_t>(secondary_[i])];
-      k_cap_[i] = 2.0 * p_.cap_fraction * m * r * r;
-    }
-  }
+  // Fixed-step stiffness cap: 2 f (Tsca/dt)^2, times the node's current mass (which
+  // includes the mass its elements already needed) in add_forces.
+  cap_per_mass_ = p_.fixed_dt > 0 ? 2.0 * p_.cap_fraction * (p_.tsca / p_.fixed_dt) * (p_.tsca / p_.fixed_dt)
+                                  : std::numeric_limits<double>::infinity();
 
   // Exclusions: segments containing the node, and segments sharing a node with those.
   std::vector<std::vector<Index>> node_segs(nodes.n_nodes);
@@ -351,7 +346,9 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     else if (p_.istf >= 2 && !node_k0_.empty()) kp = p_.stfac * combine(p_.istf, km, node_k0_[i]);
     else kp = p_.stfac * km;
     if (p_.stmin > 0) kp = std::max(kp, p_.stmin);
-    double kmax = k_cap_[i];
+    double kmax = std::isfinite(cap_per_mass_)
+                      ? cap_per_mass_ * nodes.mass[static_cast<std::size_t>(sn)]
+                      : std::numeric_limits<double>::infinity();
     if (p_.stmax > 0) kmax = std::min(kmax, p_.stmax);
     if (!std::isfinite(kmax)) kmax = 100.0 * kp;
     kp = std::min(kp, kmax);

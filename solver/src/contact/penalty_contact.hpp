@@ -9,8 +9,9 @@
 // node approaches a shell mid-surface): K(p) = Kp g / (g - p), capped at Kmax, F = K p;
 // solid faces use the linear law F = Kp p. Kp = Stfac K0 (Istf=0) or Stfac (Istf=1)
 // or K0 combined with the secondary side (Istf 2-5), bounded by Stmin/Stmax and by the
-// fixed-step cap Kcap = 2 f m_s (Tsca/dt)^2 so that the contact alone never pulls the
-// node's nodal step dt_n = Tsca sqrt(2 m / k) under the fixed step (f = cap fraction).
+// fixed-step cap Kcap = 2 f m_s (Tsca/dt)^2 (m_s: the node's mass this cycle, added mass
+// included) so that the contact alone never pulls the node's nodal step
+// dt_n = Tsca sqrt(2 m / k) under the fixed step (f = cap fraction).
 // Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
 // mass of node and segment; the total normal force is kept compressive. Coulomb friction
 // (Fric) by a regularised stick-slip (elastic-plastic tangential spring): F_t += -K v_t dt,
@@ -119,7 +120,7 @@ class PenaltyContact {
   std::vector<Index> secondary_;
   PenaltyContactParams p_;
   std::vector<double> node_gap_, node_k0_;
-  std::vector<double> k_cap_;          // per secondary node [force/length]
+  double cap_per_mass_ = 0;            // K cap / nodal mass [1/time^2]
   double margin_ = 0;
   double max_gap_ = 0;
 
