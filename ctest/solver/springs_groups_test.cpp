@@ -137,3 +137,20 @@ TEST(SpringBeam, TorsionAndBendingFromNodalRotations) {
   EXPECT_NEAR(out[3], 40.0 * 0.02, 1e-12);
   EXPECT_NEAR(slot_m(*g, 1).x(), -40.0 * 0.02, 1e-12);
 }
+
+TEST(SpringBeam, OrientationNodeSetsTheLocalYAxis) {
+  NodalState n;
+  n.resize(3);
+  n.x0.x[1] = n.x.x[1] = 10.0;  // axis along X
+  n.x0.z[2] = n.x.z[2] = 5.0;   // n3 above node 1: local y = global Z
+  for (int i = 0; i < 3; ++i) { n.mass0[i] = n.mass[i] = 1; n.inertia0[i] = n.inertia[i] = 1; n.has_rotation[i] = 1; }
+  const std::vector<Index> n3{2};
+  auto g = make_spring_group(linear_property(SpringType::Beam, {10, 20, 30, 40, 50, 60}), 0, {0, 1}, {1}, n, &n3);
+  auto& beam = dynamic_cast<SpringBeamGroup&>(*g);
+  EXPECT_NEAR((beam.frame0[0].col(1) - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-15);
+  n.x.z[1] = 0.1;  // shear along global Z = local y: K2 = 20
+  GroupStepResult r;
+  g->compute_forces(StepContext{1, 0, 1e-3, 1e-3}, n, r);
+  EXPECT_NEAR(beam.out_force[0][1], 20.0 * 0.1, 1e-9);
+  EXPECT_NEAR(beam.out_force[0][2], 0.0, 1e-9);
+}

@@ -157,6 +157,7 @@ struct PendingGroup {
   const hbm::deck::Card* first_card = nullptr;
   std::vector<Index> connectivity;
   std::vector<std::int64_t> ids;
+  std::vector<Index> orientation;  // n3 per element, kNoIndex if blank
 };
 
 }  // namespace
@@ -192,9 +193,32 @@ void build_spring_groups(BuildContext& ctx) {
                                      std::to_string(c->integer(row, "n1")) + " to itself");
         continue;
       }
+      Index n3 = kNoIndex;
+      if (c->integer(row, "n3") != 0) {
+        if (pk != "/PROP/TYPE13") {
+          ctx.warning(*c, "spring " + std::to_string(c->integer(row, "id")) +
+                              ": orientation node n3 is used by /PROP/TYPE13 only; ignored for " + std::string(pk));
+        } else {
+          n3 = ctx.require_node(*c, row, "n3");
+          if (n3 == kNoIndex) continue;
+          const NodalState& xs = ctx.nodes();
+          const auto a = static_cast<std::size_t>(n1), b = static_cast<std::size_t>(n2),
+                     k3 = static_cast<std::size_t>(n3);
+          const double ux = xs.x0.x[b] - xs.x0.x[a], uy = xs.x0.y[b] - xs.x0.y[a], uz = xs.x0.z[b] - xs.x0.z[a];
+          const double wx = xs.x0.x[k3] - xs.x0.x[a], wy = xs.x0.y[k3] - xs.x0.y[a], wz = xs.x0.z[k3] - xs.x0.z[a];
+          const double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
+          const double lu = std::sqrt(ux * ux + uy * uy + uz * uz), lw = std::sqrt(wx * wx + wy * wy + wz * wz);
+          if (!(std::sqrt(cx * cx + cy * cy + cz * cz) > 1e-6 * lu * lw)) {
+            ctx.error(*c, row, "n3", "orientation node " + std::to_string(c->integer(row, "n3")) +
+                                         " lies on the axis n1-n2 of spring " + std::to_string(c->integer(row, "id")));
+            continue;
+          }
+        }
+      }
       g.connectivity.push_back(n1);
       g.connectivity.push_back(n2);
       g.ids.push_back(c->integer(row, "id"));
+      g.orientation.push_back(n3);
     }
   }
   std::map<std::int64_t, SpringProperty> props;
@@ -208,7 +232,8 @@ void build_spring_groups(BuildContext& ctx) {
     }
     const SpringProperty& sp = it->second;
     NodalState& nodes = ctx.nodes();
-    auto group = springs::make_spring_group(sp, part, pending.connectivity, pending.ids, nodes);
+    auto group = springs::make_spring_group(sp, part, pending.connectivity, pending.ids, nodes,
+                                            &pending.orientation);
     group->part_title = p.title;
     bool ok = true;
     for (std::size_t e = 0; e < group->n_elements; ++e) {

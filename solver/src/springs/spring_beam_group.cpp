@@ -38,7 +38,13 @@ void SpringBeamGroup::init_frames(const NodalState& nodes) {
     Eigen::Vector3d ex = prop.skew.col(0);
     if (d.norm() > 0) ex = d / d.norm();
     Eigen::Vector3d ey = prop.skew.col(1);
-    if (!prop.has_skew || std::abs(ey.dot(ex)) > 0.999) {
+    const Index n3 = e < orientation_node.size() ? orientation_node[e] : kNoIndex;
+    if (n3 != kNoIndex) {
+      const auto k3 = static_cast<std::size_t>(n3);
+      const Eigen::Vector3d d3(nodes.x0.x[k3] - nodes.x0.x[a], nodes.x0.y[k3] - nodes.x0.y[a],
+                               nodes.x0.z[k3] - nodes.x0.z[a]);
+      ey = d3 - d3.dot(ex) * ex;  // the builder rejects n3 on the spring axis
+    } else if (!prop.has_skew || std::abs(ey.dot(ex)) > 0.999) {
       // Global axis least aligned with x.
       int k = 0;
       for (int i = 1; i < 3; ++i)

@@ -2,8 +2,8 @@
 // /PROP/TYPE13 beam-type springs: six DOFs in a corotational frame that follows the two
 // nodes. Each element tracks the rotation R_a, R_b of its nodes (R <- exp(omega dt) R,
 // exponential map of the nodal angular velocity) and builds its frame from the mean
-// rotation and the initial frame E0 (x along the initial chord, y from the property skew,
-// or the global axis least aligned with x):
+// rotation and the initial frame E0 (x along the initial chord, y towards the orientation
+// node n3 when given, else the global axis least aligned with x, made normal to x):
 //   psi   = log(R_a^T R_b)                     relative rotation (body of node a)
 //   E     = R_a exp(psi / 2) E0                frame of the mean rotation
 //   delta = E^T (x_b - x_a) - (l0, 0, 0)       axial and two shear displacements
@@ -26,6 +26,7 @@ class SpringBeamGroup final : public SpringGroup {
   std::vector<Eigen::Matrix3d> frame0;     // E0 per element (columns x, y, z)
   std::vector<Eigen::Quaterniond> rot_a;   // rotation of node a since t = 0
   std::vector<Eigen::Quaterniond> rot_b;   // rotation of node b since t = 0
+  std::vector<Index> orientation_node;     // optional n3 per element (y axis towards it)
 
   std::string_view formulation() const override { return "spring TYPE13 beam-type"; }
   void compute_forces(const StepContext& step, const NodalState& nodes,

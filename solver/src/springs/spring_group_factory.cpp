@@ -26,7 +26,8 @@ bool has_rotational_law(const SpringProperty& prop) {
 std::unique_ptr<SpringGroup> make_spring_group(const SpringProperty& prop, Index part,
                                                std::vector<Index> connectivity,
                                                std::vector<std::int64_t> element_ids,
-                                               const NodalState& nodes) {
+                                               const NodalState& nodes,
+                                               const std::vector<Index>* orientation) {
   std::unique_ptr<SpringGroup> g;
   bool rotational = false;
   switch (prop.type) {
@@ -57,7 +58,10 @@ std::unique_ptr<SpringGroup> make_spring_group(const SpringProperty& prop, Index
   g->init_state();
   g->allocate_slots(rotational);
   if (auto* a = dynamic_cast<SpringAxialGroup*>(g.get())) a->init_axes(nodes);
-  if (auto* b = dynamic_cast<SpringBeamGroup*>(g.get())) b->init_frames(nodes);
+  if (auto* b = dynamic_cast<SpringBeamGroup*>(g.get())) {
+    if (orientation) b->orientation_node = *orientation;
+    b->init_frames(nodes);
+  }
   if (auto* s = dynamic_cast<SpringGeneralGroup*>(g.get()))
     s->rotation.assign(s->n_elements, Eigen::Vector3d::Zero());
   return g;

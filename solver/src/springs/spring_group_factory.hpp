@@ -22,9 +22,12 @@ SpringNodalShare spring_nodal_share(const SpringProperty& prop, double length0);
 // True when some rotational DOF of a 6-DOF property has a stiffness, damping or curve.
 bool has_rotational_law(const SpringProperty& prop);
 
+// `orientation` (TYPE13 only, optional): per element the node n3 whose position gives
+// the initial local y axis (kNoIndex: from the skew or the global axes).
 std::unique_ptr<SpringGroup> make_spring_group(const SpringProperty& prop, Index part,
                                                std::vector<Index> connectivity,
                                                std::vector<std::int64_t> element_ids,
-                                               const NodalState& nodes);
+                                               const NodalState& nodes,
+                                               const std::vector<Index>* orientation = nullptr);
 
 }  // namespace hbm::solver::springs
