@@ -114,6 +114,20 @@ const ContactSurface* surface_of(BuildContext& ctx, const SurfaceTable& t, const
   return &it->second;
 }
 
+// Options this implementation does not have: a non-default value is reported (never
+// silently ignored); the run goes on with the documented behaviour.
+void warn_unsupported(BuildContext& ctx, const Card& c, std::initializer_list<std::string_view> fields) {
+  for (std::string_view f : fields) {
+    if (!contact::has_any(c, {f}) || contact::blank_any(c, {f})) continue;
+    const contact::FieldRef r = contact::find_any(c, {f});
+    const hbm::deck::Value& v = c.value(*r.row, r.spec->name);
+    const bool is_default = r.spec->type == hbm::deck::FieldType::Real ? v.real == r.spec->default_value
+                                                                       : static_cast<double>(v.integer) == r.spec->default_value;
+    if (!is_default)
+      ctx.warning(c, std::string("field ").append(f).append(" is not supported by the engine: ignored"));
+  }
+}
+
 double default_gap(const ContactSurface& s, const NodalState& n) {
   double g = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < s.size(); ++k) {
@@ -166,6 +180,8 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     ctx.error(c, "Stfac must be > 0, Fric and VIS_S >= 0");
     return;
   }
+  warn_unsupported(ctx, c, {"Ibag", "Idel", "Iadm", "Fpenmax", "ITIED", "mesh_size", "dtmin", "Irem_gap",
+                            "Irem_i2", "Inacti", "Ifiltr", "Xfreq", "Iform", "sens_id", "fct_IDF"});
   const RunControl& rc = ctx.model().control;
   if (rc.nodal_cst) {
     p.fixed_dt = rc.dt_min;
@@ -190,6 +206,7 @@ void build_type2(BuildContext& ctx, const Card& c, const SurfaceTable& surfs) {
   const std::vector<Index>* sec = node_group_of(ctx, c, F_SEC, false);
   const ContactSurface* main = surface_of(ctx, surfs, c);
   if (!sec || !main) return;
+  warn_unsupported(ctx, c, {"Ignore", "Spotflag", "Level", "Isearch", "Idel2"});
   double dsearch = 0;
   if (contact::has_any(c, {"dsearch", "Dsearch", "dSearch"})) dsearch = contact::real_any(c, {"dsearch", "Dsearch", "dSearch"});
   std::vector<Index> untied;
@@ -224,6 +241,7 @@ void build_rwall(BuildContext& ctx, const Card& c) {
     return;
   }
   p.fric = contact::real_any(c, {"fric", "Fric"});
+  warn_unsupported(ctx, c, {"ffac", "ifq"});
   const double dsearch = contact::real_any(c, {"Dsearch", "dsearch", "d"});
   contact::V3 m1{contact::real_any(c, {"XM1"}), contact::real_any(c, {"YM1"}), contact::real_any(c, {"ZM1"})};
   if (node_id != 0) {
