@@ -312,6 +312,13 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   }
   add_th(d, "/TH/RBODY", obj + 2, "impactor rigid body", {"FX", "FY", "FZ", "VX", "VY", "VZ"}, {obj + 1});
   add_th(d, "/TH/INTER", obj + 3, "impactor contact", {"FN", "FT", "ECONT"}, {obj + 1});
+  {
+    // Internal and hourglass energy and added mass of every part: where energy and mass go.
+    std::vector<std::int64_t> parts;
+    for (const auto& [pid, title] : model.part_titles) parts.push_back(pid);
+    parts.push_back(part);
+    add_th(d, "/TH/PART", obj + 4, "parts", {"IE", "HE", "AM"}, parts);
+  }
 
   // Texts.
   const std::string rel_model = fs::relative(fs::absolute(model_path), fs::absolute(out_dir)).generic_string();
