@@ -561,10 +561,15 @@ void Builder::build_pelvis() {
       if ((m_.nodes[static_cast<std::size_t>(n)] - ac).norm() <= 40) nodes.push_back(n);
     if (nodes.size() < 3) throw std::runtime_error("pelvis: fewer than 3 cortex nodes within 40 mm of acetabulum_" + side +
                                                    " (check pelvis_landmarks.csv and torso_sections.csv wall)");
+    // Joint node at the hip centre (secondary); main node at the centroid.
     Eigen::Vector3d hip = g_.skeleton.link("femur_" + side).joint_origin;
-    int main = m_.add_node(hip);
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : nodes) c += m_.nodes[static_cast<std::size_t>(n)];
+    int joint = m_.add_node(hip);
+    nodes.push_back(joint);
+    int main = m_.add_node(c / static_cast<double>(nodes.size() - 1));
     rigid("acetabulum_" + side, "pelvis", main, nodes);
-    joint_node_["hip_pelvis_" + side] = main;
+    joint_node_["hip_pelvis_" + side] = joint;
     std::vector<int> troch;
     Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
     for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n)
@@ -880,8 +885,12 @@ void Builder::build_shoulders() {
         shell(cp, {rings[ru][kk], rings[ru][k1], rings[ru + 1][k1], rings[ru + 1][kk]});
       }
     // Medial end: small rigid body at the SC joint, spring to the nearest sternum node.
-    int sc_main = m_.add_node(sc);
-    rigid("clavicle_medial_" + side, "thorax", sc_main, rings.front());
+    int sc_main = m_.add_node(sc);  // joint node (secondary) at the SC joint centre
+    std::vector<int> medial = rings.front();
+    medial.push_back(sc_main);
+    Eigen::Vector3d mc = Eigen::Vector3d::Zero();
+    for (int n : rings.front()) mc += m_.nodes[static_cast<std::size_t>(n)];
+    rigid("clavicle_medial_" + side, "thorax", m_.add_node(mc / static_cast<double>(rings.front().size())), medial);
     int nearest = -1;
     double best = 1e30;
     for (int n : sternum_nodes_) {

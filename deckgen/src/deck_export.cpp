@@ -75,7 +75,7 @@ Deck model_cards(const FeModel& m, const std::string& title) {
   for (const FePart& p : m.parts) {
     if (p.kind != ElementKind::Shell && p.kind != ElementKind::Tria) continue;
     CardBuilder(d, "/PROP/TYPE1", shell_prop_id(p), "shell " + p.name)
-        .set_int(0, "Ishell", 24)
+        .set_int(0, "Ishell", 4)
         .set_int(0, "Ish3n", 2)
         .set_int(2, "N", 3)
         .set(2, "Thick", p.thickness > 0 ? p.thickness : 1.0)
@@ -86,6 +86,9 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       CardBuilder(d, "/PROP/TYPE4", spring_prop_id(s), "spring " + s.name).set(1, "K", s.k[0]).set(1, "C", s.c[0]).commit();
     } else {
       CardBuilder c(d, "/PROP/TYPE8", spring_prop_id(s), "joint " + s.name);
+      // Spring mass 10 g and inertia 1 kg mm^2 (half to each node): the joint nodes carry no
+      // element mass; negligible beside the rigid bodies the joints connect.
+      c.set(0, "Mass", 0.01).set(0, "Inertia", 1.0);
       for (int k = 0; k < 6; ++k) {
         std::string n = std::to_string(k + 1);
         c.set(static_cast<std::size_t>(1 + 3 * k), "K" + n, s.k[static_cast<std::size_t>(k)]);
@@ -97,7 +100,10 @@ Deck model_cards(const FeModel& m, const std::string& title) {
   for (const FePart& p : m.parts) {
     CardBuilder c(d, "/PART", p.id, p.name);
     if (p.kind == ElementKind::Spring) {
+      // Spring parts carry the first material's id: Radioss ignores it for springs, the
+      // project solver requires an existing material on every part.
       c.set_int(0, "prop_id", spring_prop_id(m.spring_props[static_cast<std::size_t>(p.spring_prop)]));
+      c.set_int(0, "mat_id", m.materials.front().id);
     } else {
       c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? kSolidProp : shell_prop_id(p));
       c.set_int(0, "mat_id", m.materials[static_cast<std::size_t>(p.material)].id);

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
     dg::assign_rigid_body_masses(m, g);
-    m.notes.push_back("hbm-deckgen: 50th percentile male driver model from " + g.dir.string() + " (units kg mm ms)");
+    m.notes.push_back("hbm-deckgen: 50th percentile male driver model from geometry sources " + g.dir.filename().string() + "/ (units kg mm ms)");
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";
     bool ok = dg::print_budget(std::cout, dg::element_budget(m), 10000, 12000);

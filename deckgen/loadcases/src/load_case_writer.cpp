@@ -343,7 +343,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
        << "# Subject free (no seat, no back support, no gravity: the event lasts " << fmt(spec.tstop_ms, 0) << " ms).\n"
        << "# Time histories: /TH/NODE/" << obj + 1 << " (impactor main node, " << spec.spine_level << " node "
        << g.spine_node << ", sternum node " << g.sternum_node << "), /TH/RBODY/" << obj + 2 << ", /TH/INTER/" << obj + 3
-       << ".\n# Run:  hbm-solver " << spec.name << "_0000.rad --out RUN_DIR\n"
+       << ", /TH/PART/" << obj + 4 << " (IE HE AM of every part).\n# Run:  hbm-solver " << spec.name << "_0000.rad --out RUN_DIR\n"
        << "# Rate: hbm-corridors --case " << spec.corridor_case << " --th RUN_DIR --out REPORT_DIR\n";
 
   // Write into a temporary sibling folder, check, then rename.

@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// deckgen unit tests. Every expectation is fixed by the reference data or by mechanics:
+// segment masses within 10 % of segment_targets.csv, element budget 10 000-12 000, no
+// inverted element, stable 1.5 us step with <= 0.5 % added mass, disc bricks reproducing
+// the published axial stiffness, equivalent rib strips reproducing E*I and E*A, joint
+// rotations preserving distances; malformed sources give file:line errors.
+#include "hbm/deckgen/body_mesher.hpp"
+#include "hbm/deckgen/deck_export.hpp"
+#include "hbm/deckgen/geometry_sources.hpp"
+#include "hbm/deckgen/model_checks.hpp"
+#include "hbm/deckgen/surface_io.hpp"
+#include "hbm/deckgen/table.hpp"
+
+#include "hbm/deck/io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace hbm::deckgen;
+
+namespace {
+
+const fs::path kGeometry = fs::path(HBM_SOURCE_DIR) / "geometry";
+
+struct Built {
+  GeometrySources g;
+  ModelLandmarks lm;
+  FeModel m;
+};
+
+const Built& model() {
+  static Built b = [] {
+    Built x;
+    x.g = load_geometry(kGeometry);
+    x.m = build_body_model(x.g, MesherOptions{}, &x.lm);
+    assign_rigid_body_masses(x.m, x.g);
+    return x;
+  }();
+  return b;
+}
+
+fs::path copy_geometry(const std::string& tag) {
+  fs::path d = fs::temp_directory_path() / ("hbm_deckgen_test_" + tag);
+  fs::remove_all(d);
+  fs::copy(kGeometry, d, fs::copy_options::recursive);
+  return d;
+}
+
+void replace_in_file(const fs::path& f, const std::string& from, const std::string& to) {
+  std::ifstream in(f);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string s = ss.str();
+  auto p = s.find(from);
+  ASSERT_NE(p, std::string::npos) << from;
+  s.replace(p, from.size(), to);
+  std::ofstream(f) << s;
+}
+
+}  // namespace
+
+TEST(Table, MalformedNumberNamesFileLineAndField) {
+  try {
+    Table t = Table::parse("# src\na,b\n1,2\n3,x4\n", "t.csv");
+    t.number(t.rows()[1], "b");
+    FAIL() << "no error";
+  } catch (const SourceError& e) {
+    EXPECT_EQ(std::string(e.what()), "t.csv:4: b: 'x4' is not a number");
+  }
+}
+
+TEST(Table, WrongFieldCountIsAnError) {
+  EXPECT_THROW(Table::parse("a,b\n1,2,3\n", "t.csv"), SourceError);
+}
+
+TEST(GeometrySources, BadRibRowStopsWithFileLine) {
+  fs::path d = copy_geometry("rib");
+  replace_in_file(d / "rib_cage.csv", "6,T6,24,0.80,", "6,T6,24,1.80,");
+  try {
+    load_geometry(d);
+    FAIL() << "no error";
+  } catch (const SourceError& e) {
+    std::string w = e.what();
+    EXPECT_NE(w.find("rib_cage.csv:"), std::string::npos) << w;
+    EXPECT_NE(w.find("end_fraction"), std::string::npos) << w;
+  }
+}
+
+TEST(GeometrySources, UrdfMissingLinkAndBrokenXml) {
+  fs::path d = copy_geometry("urdf");
+  replace_in_file(d / "skeleton.urdf", "<link name=\"T7\"/>", "<link name=\"T7x\"/>");
+  EXPECT_THROW(load_geometry(d), SourceError);
+  fs::path e = copy_geometry("urdf2");
+  replace_in_file(e / "skeleton.urdf", "</robot>", "</robo>");
+  try {
+    load_geometry(e);
+    FAIL() << "no error";
+  } catch (const SourceError& x) {
+    EXPECT_NE(std::string(x.what()).find("skeleton.urdf"), std::string::npos);
+  }
+}
+
+TEST(Cli, BadInputExitsOneAndWritesNothing) {
+  fs::path d = copy_geometry("cli");
+  replace_in_file(d / "torso_sections.csv", "140,152.9,", "140,abc,");
+  fs::path out = fs::temp_directory_path() / "hbm_deckgen_test_cli_out";
+  fs::remove_all(out);
+  std::string cmd = std::string(HBM_DECKGEN_EXE) + " -g " + d.string() + " -o " + out.string() + " > /dev/null 2>&1";
+  int rc = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 1);
+  EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
+}
+
+TEST(Model, ElementBudget) {
+  std::size_t n = model().m.element_count();
+  EXPECT_GE(n, 10000u);
+  EXPECT_LE(n, 12000u);
+}
+
+TEST(Model, NoInvertedElementAndQualityWithinLimits) {
+  for (const auto& r : quality_check(model().m)) {
+    EXPECT_EQ(r.inverted, 0u) << r.part;
+    EXPECT_TRUE(quality_ok(r)) << r.part;
+  }
+}
+
+TEST(Model, StableAtOnePointFiveMicrosecondsWithLittleAddedMass) {
+  TimeStepReport r = time_step_check(model().m, 0.9, 1.5e-3);
+  EXPECT_LE(r.added_ratio(), 0.005);
+}
+
+TEST(Model, SegmentMassesAndCentresOfGravity) {
+  MassReport r = mass_check(model().m, model().g, model().lm);
+  for (const auto& s : r.segments) {
+    if (s.check_mass) {
+      EXPECT_LE(std::abs(s.mass_error()), 0.10) << s.segment;
+    }
+    if (s.check_cog) {
+      EXPECT_LE(s.cog_error(), 15.0) << s.segment;
+    }
+  }
+  // Whole body against the 50th male body mass (VIVA+ 50M 76.75 kg), within 10 %.
+  EXPECT_NEAR(r.total, 76.75, 7.675);
+}
+
+TEST(Model, DiscBricksReproduceAxialStiffness) {
+  const FeModel& m = model().m;
+  for (const auto& [disc, k] : model().g.disc_stiffness) {
+    int p = m.find_part("disc_" + disc);
+    ASSERT_GE(p, 0) << disc;
+    double area = 0, vol = 0;
+    for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+      if (m.brick_part[e] != p) continue;
+      auto P = [&](int i) { return m.nodes[static_cast<std::size_t>(m.bricks[e][static_cast<std::size_t>(i)])]; };
+      double a = 0.25 * ((P(2) - P(0)).cross(P(3) - P(1)).norm() + (P(6) - P(4)).cross(P(7) - P(5)).norm());
+      double h = 0.25 * ((P(4) - P(0)).norm() + (P(5) - P(1)).norm() + (P(6) - P(2)).norm() + (P(7) - P(3)).norm());
+      area += a;
+      vol += a * h;
+    }
+    double E = m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(p)].material)].E;  // GPa
+    double k_model = E * area / (vol / area) * 1e3;  // N/mm
+    EXPECT_NEAR(k_model, k, 0.01 * k) << disc;
+  }
+}
+
+TEST(Mechanics, EquivalentRibStripKeepsBendingAndAxialStiffness) {
+  // Hollow ellipse 13 x 6 mm, cortex 1 mm, strip height 20 mm.
+  double h = 13, w = 6, t = 1, band = 20;
+  double teq = equivalent_rib_thickness(h, w, t, band);
+  double A = hollow_ellipse_area(h, w, t), I = hollow_ellipse_inertia(h, w, t);
+  double scale = A / (band * teq);  // E_eq / E
+  EXPECT_NEAR(scale * band * teq, A, 1e-9 * A);
+  EXPECT_NEAR(scale * band * teq * teq * teq / 12, I, 1e-9 * I);
+  // Solid-ellipse limit (cortex = semi-axis): I = pi/4 b a^3, A = pi a b.
+  EXPECT_NEAR(hollow_ellipse_inertia(h, w, 3), M_PI / 4 * 6.5 * 27, 1e-9);
+}
+
+TEST(Posture, KneeRotationMovesTheLegRigidlyAboutTheKnee) {
+  GeometrySources g = load_geometry(kGeometry);
+  const double a = 10 * M_PI / 180;
+  g.skeleton.set_joint("knee_r", a);
+  Eigen::Vector3d knee = g.skeleton.link("tibia_r").joint_origin, cog = g.skeleton.link("tibia_r").cog;
+  Eigen::Vector3d moved = g.skeleton.motion("tibia_r") * cog;
+  EXPECT_NEAR((moved - knee).norm(), (cog - knee).norm(), 1e-9);
+  // Angle about the joint axis: components normal to the axis.
+  Eigen::Vector3d ax = g.skeleton.link("tibia_r").axis;
+  Eigen::Vector3d u = (cog - knee) - (cog - knee).dot(ax) * ax, v = (moved - knee) - (moved - knee).dot(ax) * ax;
+  EXPECT_NEAR(std::acos(u.normalized().dot(v.normalized())), a, 1e-9);
+  EXPECT_THROW(g.skeleton.set_joint("knee_r", 3.0), std::invalid_argument);  // outside the URDF limits
+}
+
+TEST(Deck, SameInputGivesIdenticalTextAndTheDeckReadsBack) {
+  Built b2;
+  b2.g = load_geometry(kGeometry);
+  b2.m = build_body_model(b2.g, MesherOptions{}, &b2.lm);
+  assign_rigid_body_masses(b2.m, b2.g);
+  auto text = [](const FeModel& m) {
+    hbm::deck::Deck d = model_cards(m, "t");
+    std::ostringstream os;
+    hbm::deck::write_deck(os, d);
+    return os.str();
+  };
+  std::string t1 = text(model().m), t2 = text(b2.m);
+  EXPECT_EQ(t1, t2);
+  fs::path dir = fs::temp_directory_path() / "hbm_deckgen_test_deck";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_model_include(dir / "m.inc", model().m, "t");
+  write_drop_decks(dir, "m_drop", "m.inc", model().m, DropTest{});
+  auto r = hbm::deck::read_deck(dir / "m_drop_0000.rad", hbm::deck::Section::Starter);
+  std::ostringstream diag;
+  hbm::deck::print_diagnostics(diag, r);
+  EXPECT_TRUE(r.ok()) << diag.str();
+}
+
+TEST(Surface, TorsoBoundaryIsClosedAndVolumeMatches) {
+  std::ostringstream os;
+  EXPECT_TRUE(print_surface_check(os, model().m)) << os.str();
+}
+
+TEST(Surface, ExportThenImportRoundTrip) {
+  fs::path f = fs::temp_directory_path() / "hbm_deckgen_test_surface.stl";
+  export_outer_surface(model().m, f);
+  TriSurface s = import_surface(f);
+  EXPECT_EQ(s.triangles.size(), outer_surface(model().m).triangles.size());
+  fs::path bad = fs::temp_directory_path() / "hbm_deckgen_test_bad.obj";
+  std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+  EXPECT_THROW(import_surface(bad), SourceError);
+}
