@@ -13,6 +13,8 @@
 //    mid-surfaces never cross (distance > 0 at every output) and contact did happen.
 //  - contact_tied_bar: reflection at the TYPE2 interface < 2% of the incident pulse,
 //    transmitted amplitude within 3% of the control bar's.
+//  - contact_moving_wall: a moving /RWALL/PLANE (node, Mass, VX0) strikes a free block:
+//    X momentum of wall + block conserved to the CSV precision at every output.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -258,6 +260,26 @@ TEST(ContactDecks, FoldedShellStripDoesNotCrossItself) {
   EXPECT_GT(nact, 10.0);
   // The upper leg came back up after the impact (rebound).
   EXPECT_GT(c.rows.back()[10], dz_min + 1.0);
+}
+
+TEST(ContactDecks, MovingWallOfGivenMassConservesMomentum) {
+  // Analytic value: total X momentum Mw VW = 2e-3 kg * 3 mm/ms = 6e-3 kg mm/ms at every row
+  // (tolerance 1e-9 relative: the CSV holds 10 significant digits); the impact must have
+  // happened (the wall lost more than 10% of its speed).
+  REQUIRE_SOLVER();
+  const std::string name = "contact_moving_wall";
+  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const Csv nodes = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const double mw = 2e-3, vw = 3.0, h = 10.0 / 4, me = 1e-6 * h * h * h, p0 = mw * vw;
+  const std::vector<double> m = block_masses(4, 4, 4, me);
+  const int wall = nodes.col("node 1000 wall VX");
+  ASSERT_EQ(nodes.header.size(), static_cast<std::size_t>(wall) + 1 + m.size());
+  for (const auto& r : nodes.rows) {
+    double p = mw * r[static_cast<std::size_t>(wall)];
+    for (std::size_t i = 0; i < m.size(); ++i) p += m[i] * r[static_cast<std::size_t>(wall) + 1 + i];
+    EXPECT_NEAR(p, p0, 1e-9 * p0) << "t = " << r[0];
+  }
+  EXPECT_LT(nodes.rows.back()[static_cast<std::size_t>(wall)], 0.9 * vw);
 }
 
 TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {

@@ -147,9 +147,9 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
   }
   {
     KeywordSpec k = object("/RWALL/PLANE",
-                           "Fixed infinite plane rigid wall through M with normal M->M1 (moving walls not supported).");
+                           "Infinite plane rigid wall with normal M->M1: fixed through M (node_id = 0) or moving with node_id, given Mass and initial velocity.");
     k.lines.push_back(line("line 1", {
-        int_field("node_id", 0, 0, 0, 0, "wall node (0: fixed wall; moving walls not supported)", Dimension::Id),
+        id_field("node_id", 0, RefKind::Node, false, "wall node (0: fixed wall through M; else a moving wall at this node)"),
         int_field("Slide", 10, 0, 2, 0, "0 sliding, 1 tied, 2 sliding with friction"),
         id_field("grnod_id1", 20, RefKind::Grnod, false, "node group added to the secondary nodes"),
         id_field("grnod_id2", 30, RefKind::Grnod, false, "node group removed from the secondary nodes"),
@@ -161,10 +161,13 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
         real_field("ffac", 60, Dimension::None, kNonNegative, 0, "friction filtering factor"),
         int_field("ifq", 80, 0, 3, 0, "friction filtering flag"),
     }));
-    k.lines.push_back(line("point M", {
-        real_field("XM", 0, Dimension::Length, kAny, 0, "X of point M on the wall"),
-        real_field("YM", 20, Dimension::Length, kAny, 0, "Y of point M"),
-        real_field("ZM", 40, Dimension::Length, kAny, 0, "Z of point M"),
+    // Radioss reads this line as XM YM ZM when node_id = 0 and as Mass VX0 VY0 VZ0 when
+    // node_id != 0 (same columns); the field names are those of the fixed wall.
+    k.lines.push_back(line("point M (node_id = 0) or Mass VX0 VY0 VZ0 (node_id != 0)", {
+        real_field("XM", 0, Dimension::None, kAny, 0, "X of point M on the wall; moving wall: its Mass"),
+        real_field("YM", 20, Dimension::None, kAny, 0, "Y of point M; moving wall: initial velocity VX0"),
+        real_field("ZM", 40, Dimension::None, kAny, 0, "Z of point M; moving wall: initial velocity VY0"),
+        real_field("VZ0", 60, Dimension::Velocity, kAny, 0, "moving wall: initial velocity VZ0 (blank for a fixed wall)"),
     }));
     k.lines.push_back(line("point M1", {
         real_field("XM1", 0, Dimension::Length, kAny, 0, "X of M1: normal M->M1 points to the free side"),

@@ -80,11 +80,15 @@ class Starter:
     def inter2(self, iid, title, grnod, surf, dsearch=0.0):
         self.card(f"/INTER/TYPE2/{iid}", title, [i10(grnod) + i10(surf) + blank(60) + f20(dsearch)])
 
-    def rwall_plane(self, wid, title, point, normal_point, slide=0, fric=0.0, grnod1=0, dsearch=0.0):
+    def rwall_plane(self, wid, title, point, normal_point, slide=0, fric=0.0, grnod1=0, dsearch=0.0,
+                    node=0, mass=0.0, v0=(0.0, 0.0, 0.0)):
+        # Fixed wall (node = 0): line 3 is the point M. Moving wall: line 3 is Mass VX0 VY0 VZ0
+        # and the wall passes through the node (point is then unused).
+        line3 = "".join(f20(c) for c in point) if node == 0 else f20(mass) + "".join(f20(c) for c in v0)
         self.card(f"/RWALL/PLANE/{wid}", title, [
-            i10(0) + i10(slide) + i10(grnod1) + i10(0),
+            i10(node) + i10(slide) + i10(grnod1) + i10(0),
             f20(dsearch) + f20(fric),
-            "".join(f20(c) for c in point),
+            line3,
             "".join(f20(c) for c in normal_point),
         ])
 
