@@ -964,7 +964,9 @@ void Builder::build_contacts() {
   std::vector<int> clav = clavicle_nodes_[0];
   clav.insert(clav.end(), clavicle_nodes_[1].begin(), clavicle_nodes_[1].end());
   add("clavicle_ribcage", 7, clav, cage_segments_, 1.0);
-  add("clavicle_skin", 7, clav, torso_skin_, 1.0);
+  // No clavicle-skin contact: at the acromial end the clavicle pierces the coarse shoulder
+  // skin (initial penetration, 36 % energy error at cycle 0 in the drop test); to be added
+  // back when the shoulder envelope is refined.
   add("head_thorax", 7, outside(head_env_nodes_), torso_skin_, 2.0);
 }
 
