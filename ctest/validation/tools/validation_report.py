@@ -81,6 +81,9 @@ def listing_facts(run_dir, case):
         facts["solver_wall_s"], facts["cycles"] = float(m.group(1)), int(m.group(2))
     if "NORMAL TERMINATION" in text:
         facts["terminated"] = "normal"
+    elif not m:
+        facts["terminated"] = "incomplete"
+        facts["reason"] = "no final timing table: the run was still going or was killed when this page was written"
     else:
         tail = [l.strip() for l in text.strip().splitlines()[-40:] if l.strip()]
         reason = [l for l in tail if re.search(r"stop|error|invert|exceed|ERROR|STOP", l)]
@@ -113,7 +116,16 @@ def main():
         kv = read_kv(os.path.join(a.work, "runs", f"{c}.run.txt"))
         lf = listing_facts(run_dir, c)
         gh = global_history(run_dir)
-        r = {"case": c, "exit": kv.get("exit_code", "-"), "wall": float(kv["wall_s"]) if "wall_s" in kv else None,
+        tstop = None
+        eng = os.path.join(run_dir, "..", "..", "decks", c, f"{c}_0001.rad")
+        for cand in [eng, os.path.join("decks", c, f"{c}_0001.rad")]:
+            if os.path.exists(cand):
+                lines = [l.strip() for l in open(cand) if l.strip() and not l.startswith("#")]
+                for i, l in enumerate(lines):
+                    if l.startswith("/RUN/") and i + 1 < len(lines):
+                        tstop = float(lines[i + 1].split()[0])
+                break
+        r = {"case": c, "tstop": tstop, "exit": kv.get("exit_code", "-"), "wall": float(kv["wall_s"]) if "wall_s" in kv else None,
              "threads": kv.get("threads", "-"), **lf}
         if gh and gh["time"]:
             r["t_end"] = gh["time"][-1]
@@ -206,12 +218,12 @@ def main():
     L.append("")
     L.append("## Runs")
     L.append("")
-    L.append("| case | termination | simulated [ms] | cycles | wall [s] | threads | energy error max [%] | "
+    L.append("| case | termination | simulated of end time [ms] | cycles | wall [s] | threads | energy error max [%] | "
              "added mass end [%] | hourglass / internal end [%] | hourglass / internal max [%] |")
     L.append("|---|---|---|---|---|---|---|---|---|---|")
     for r in runs:
         term = r["terminated"] + (f" (exit {r['exit']}: {r['reason']})" if r["terminated"] != "normal" else "")
-        L.append(f"| {r['case']} | {term} | {fmt(r.get('t_end'))} | {r['cycles'] if r['cycles'] is not None else '-'} | "
+        L.append(f"| {r['case']} | {term} | {fmt(r.get('t_end'))} of {fmt(r.get('tstop'), 0)} | {r['cycles'] if r['cycles'] is not None else '-'} | "
                  f"{fmt(r['wall'], 1)} | {r['threads']} | {fmt(r.get('energy_err'))} | {fmt(r.get('added'), 3)} | "
                  f"{fmt(r.get('hg_end'), 1)} | {fmt(r.get('hg_max'), 1)} |")
     L.append("")
