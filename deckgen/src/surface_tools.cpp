@@ -2,6 +2,9 @@
 // CGAL-based surface tools (see surface_tools.hpp).
 #include "hbm/deckgen/surface_tools.hpp"
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -92,6 +95,18 @@ SurfaceReport check_surface(const TriSurface& s) {
   r.self_intersecting = PMP::does_self_intersect(m);
   if (r.closed) r.volume = PMP::volume(m);
   return r;
+}
+
+std::vector<double> distance_to_surface(const TriSurface& s, const std::vector<Eigen::Vector3d>& queries) {
+  Mesh m = to_cgal(s);
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  Tree tree(faces(m).first, faces(m).second, m);
+  tree.accelerate_distance_queries();
+  std::vector<double> out(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    out[i] = std::sqrt(tree.squared_distance(K::Point_3(queries[i].x(), queries[i].y(), queries[i].z())));
+  return out;
 }
 
 std::vector<bool> inside_surface(const TriSurface& s, const std::vector<Eigen::Vector3d>& queries) {

@@ -31,6 +31,9 @@ struct SurfaceReport {
 };
 SurfaceReport check_surface(const TriSurface& s);
 
+// For each query point: distance to the surface (CGAL AABB tree).
+std::vector<double> distance_to_surface(const TriSurface& s, const std::vector<Eigen::Vector3d>& queries);
+
 // For each query point: true if strictly inside the closed surface.
 std::vector<bool> inside_surface(const TriSurface& s, const std::vector<Eigen::Vector3d>& queries);
 
