@@ -74,8 +74,9 @@ ModelView read_model(const std::filesystem::path& model) {
       for (std::size_t i = 0; i < c->n_rows(); ++i) {
         const Row& row = c->row(i);
         v.max_element_id = std::max(v.max_element_id, c->integer(row, "id"));
-        for (int k = 1; k <= e.n; ++k) {
-          const std::int64_t n = c->integer(row, "n" + std::to_string(k));
+        static constexpr const char* kN[] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
+        for (int k = 0; k < e.n; ++k) {
+          const std::int64_t n = c->integer(row, kN[k]);
           if (n > 0) list.push_back(n);
         }
       }
