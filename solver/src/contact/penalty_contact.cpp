@@ -26,6 +26,9 @@ void add_force(NodalState& n, Index i, V3 f) {
   n.force.x[k] += f.x;
   n.force.y[k] += f.y;
   n.force.z[k] += f.z;
+  n.contact_force.x[k] += f.x;
+  n.contact_force.y[k] += f.y;
+  n.contact_force.z[k] += f.z;
 }
 
 std::array<V3, 4> corners(const NodalState& n, const std::array<Index, 4>& s) {

@@ -77,6 +77,12 @@ void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& node
     if (p_.slide == 1) tied_[k] = 1;
     const V3 dv = v - v_old;
     put(nodes.v, i, v);
+    // Wall reaction on the node for the animation: m dv / dt^n.
+    if (dtn > 0) {
+      nodes.contact_force.x[i] += m * dv.x / dtn;
+      nodes.contact_force.y[i] += m * dv.y / dtn;
+      nodes.contact_force.z[i] += m * dv.z / dtn;
+    }
     impulse_n += (m * dot(dv, n)) * n;
     impulse_t += m * (dv - dot(dv, n) * n);
     // Reaction m dv/dt working on the mid-step velocity (v^{n-1/2} + v^{n+1/2})/2: with

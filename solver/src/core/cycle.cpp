@@ -111,6 +111,7 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
     n.moment.z[i] = mz;
     n.rot_stiffness[i] = kr;
     n.force_ext.x[i] = n.force_ext.y[i] = n.force_ext.z[i] = 0.0;
+    n.contact_force.x[i] = n.contact_force.y[i] = n.contact_force.z[i] = 0.0;
   }
   c.times.assembly += seconds_since(t0);
 }

@@ -67,7 +67,7 @@ class Appended {
 bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std::string& error) {
   const NodalState& n = m.nodes;
   const std::size_t nn = n.n_nodes;
-  std::vector<double> pts(3 * nn), disp(3 * nn), v(3 * nn), dmas(nn);
+  std::vector<double> pts(3 * nn), disp(3 * nn), v(3 * nn), fcont(3 * nn), dmas(nn);
   for (std::size_t i = 0; i < nn; ++i) {
     pts[3 * i] = n.x.x[i];
     pts[3 * i + 1] = n.x.y[i];
@@ -78,6 +78,9 @@ bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std
     v[3 * i] = vel.x[i];
     v[3 * i + 1] = vel.y[i];
     v[3 * i + 2] = vel.z[i];
+    fcont[3 * i] = n.contact_force.x[i];
+    fcont[3 * i + 1] = n.contact_force.y[i];
+    fcont[3 * i + 2] = n.contact_force.z[i];
     dmas[i] = n.added_mass[i];
   }
   std::vector<std::int64_t> conn, offsets, part, elem;
@@ -112,6 +115,7 @@ bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std
   x << "</FieldData>\n<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << types.size() << "\">\n";
   x << "<PointData Vectors=\"displacement\">\n"
     << a.array("Float64", "displacement", 3, disp) << a.array("Float64", "velocity", 3, v)
+    << a.array("Float64", "contact_force", 3, fcont)
     << a.array("Float64", "added_mass", 1, dmas) << "</PointData>\n";
   x << "<CellData Scalars=\"part\">\n"
     << a.array("Int64", "part", 1, part) << a.array("Int64", "element_id", 1, elem)

@@ -28,6 +28,8 @@ struct NodalState {
                           //   the velocity update [length/time]
   Vec3Soa a;              // acceleration a^n = f^n / m [length/time^2]
   Vec3Soa force;          // total force f^n on the node [force]
+  Vec3Soa contact_force;  // force of contacts and rigid walls on the node this cycle
+                          //   (output only: VTK "contact_force") [force]
   Vec3Soa force_ext;      // external part of f^n (gravity, interactions report theirs
                           //   separately); used for the external work [force]
   std::vector<double> mass0;      // physical lumped mass M0 (build phase) [mass]
@@ -50,7 +52,7 @@ struct NodalState {
   void resize(std::size_t n) {
     n_nodes = n;
     user_id.assign(n, 0);
-    for (Vec3Soa* f : {&x0, &x, &v, &a, &force, &force_ext, &omega, &moment}) f->resize(n);
+    for (Vec3Soa* f : {&x0, &x, &v, &a, &force, &contact_force, &force_ext, &omega, &moment}) f->resize(n);
     for (auto* f : {&mass0, &mass, &added_mass, &stiffness, &inertia0, &inertia, &rot_stiffness})
       f->assign(n, 0.0);
     has_rotation.assign(n, 0);
