@@ -26,6 +26,7 @@ inline Index add_node(NodalState& n, std::array<double, 3> x, double m,
   grow(n.a, {0, 0, 0});
   grow(n.force, {0, 0, 0});
   grow(n.force_ext, {0, 0, 0});
+  grow(n.contact_force, {0, 0, 0});
   grow(n.omega, {0, 0, 0});
   grow(n.moment, {0, 0, 0});
   n.user_id.push_back(static_cast<std::int64_t>(i + 1));

@@ -84,6 +84,9 @@ void Gravity::add_forces(const StepContext& step, NodalState& n) {
   if (f_prev_.size() != nodes.size()) f_prev_.assign(nodes.size(), 0.0);
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const auto i = static_cast<std::size_t>(nodes[k]);
+    // A rigid body's main node carries the whole body mass (secondaries included): its
+    // secondaries take no share of their own, or the body would get gravity twice.
+    if (n.is_secondary[i]) continue;
     const double f = n.mass[i] * g;
     // Work over [t^{n-1}, t^n]: 0.5 (f^{n-1} + f^n) v^{n-1/2} dt^{n-1/2}.
     work_ += 0.5 * (f_prev_[k] + f) * component(n.v, dir, i) * step.dt_prev;
