@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     std::cerr << "error: give a starter deck NAME_0000.rad (or --bench)\n" << app.help();
     return 2;
   }
-  if (check) return hbm::deck::run_check(deck, std::cout, std::cerr) == 0 ? 0 : 1;
+  if (check) return hbm::deck::run_check(deck, std::cout, std::cerr);  // 0, 1 deck errors, 2 usage
   hbm::solver::RunOptions opt;
   opt.out_dir = out_dir;
   opt.threads = threads;
