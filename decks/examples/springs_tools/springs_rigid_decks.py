@@ -64,13 +64,6 @@ class Deck:
         self.card(f"/FUNCT/{fid}", title, [f20(x) + f20(y) for x, y in pts])
         return fid
 
-    def dummy_material(self):
-        if "mat" not in self.ids:
-            self.card("/MAT/LAW1/1", "dummy material of the spring parts (not used by springs)",
-                      [f20(1e-6), f20(1.0) + f20(0.3)])
-            self.ids["mat"] = 1
-        return 1
-
     def dof_block(self, k=0.0, c=0.0, fct1=0, h=0, fct3=0):
         return [f20(k) + f20(c) + f20(1.0) + f20(0.0) + f20(1.0),
                 i10(fct1) + i10(h) + i10(0) + i10(fct3) + i10(0),
@@ -79,7 +72,8 @@ class Deck:
     def spring_part(self, title, prop_kw, prop_lines):
         pid = self.next_id("part")
         self.card(f"{prop_kw}/{pid}", title + " property", prop_lines)
-        self.card(f"/PART/{pid}", title, [i10(pid) + i10(self.dummy_material()) + i10(0)])
+        # mat_id 0: a spring's law is its property (Radioss spring parts need no material).
+        self.card(f"/PART/{pid}", title, [i10(pid) + i10(0) + i10(0)])
         return pid
 
     def springs(self, part, pairs):

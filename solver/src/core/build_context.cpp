@@ -89,8 +89,12 @@ BuildContext::BuildContext(const hbm::deck::Deck& starter, const hbm::deck::Deck
       p.prop_card = property(p.prop_id);
       if (!p.prop_card) error(*c, c->lines.at(0), "prop_id", "no property " + std::to_string(p.prop_id));
     }
-    p.mat_card = material(p.mat_id);
-    if (!p.mat_card) error(*c, c->lines.at(0), "mat_id", "no material " + std::to_string(p.mat_id));
+    // mat_id 0 is valid for spring parts (Radioss springs take their law from the
+    // property); the deck checks already refuse it on solid and shell parts.
+    if (p.mat_id != 0) {
+      p.mat_card = material(p.mat_id);
+      if (!p.mat_card) error(*c, c->lines.at(0), "mat_id", "no material " + std::to_string(p.mat_id));
+    }
     if (!t.parts.emplace(p.id, static_cast<Index>(model.parts.size())).second) {
       error(*c, "part id " + std::to_string(p.id) + " defined twice");
       continue;
