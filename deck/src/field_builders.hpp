@@ -5,6 +5,7 @@
 
 #include "hbm/deck/schema.hpp"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -99,6 +100,21 @@ inline LineSpec line(std::string_view name, std::vector<FieldSpec> fields, bool 
 }
 
 // Tables of each section, assembled by keyword_table().
+// A starter object card with an id and a title line (/MAT/..., /PROP/..., /INTER/...).
+inline KeywordSpec object(std::string_view kw, std::string_view meaning) {
+  KeywordSpec k;
+  k.keyword = kw;
+  k.section = Section::Starter;
+  k.id = IdKind::Object;
+  k.has_title = true;
+  k.meaning = meaning;
+  return k;
+}
+
+// Field names of id lists written 10 per line (/GRNOD, /SURF/PART, /TH objects).
+inline constexpr std::array<std::string_view, 10> kIdNames = {"id1", "id2", "id3", "id4", "id5",
+                                                              "id6", "id7", "id8", "id9", "id10"};
+
 void add_starter_geometry(std::vector<KeywordSpec>& out);
 void add_starter_model(std::vector<KeywordSpec>& out);
 void add_starter_loads(std::vector<KeywordSpec>& out);

@@ -7,26 +7,7 @@
 // line count; the ranges say which.
 #include "field_builders.hpp"
 
-#include <array>
-
 namespace hbm::deck::tables {
-
-namespace {
-
-KeywordSpec object(std::string_view kw, std::string_view meaning) {
-  KeywordSpec k;
-  k.keyword = kw;
-  k.section = Section::Starter;
-  k.id = IdKind::Object;
-  k.has_title = true;
-  k.meaning = meaning;
-  return k;
-}
-
-constexpr std::array<std::string_view, 10> kIdNames = {"id1", "id2", "id3", "id4", "id5",
-                                                       "id6", "id7", "id8", "id9", "id10"};
-
-}  // namespace
 
 void add_starter_contact(std::vector<KeywordSpec>& out) {
   {

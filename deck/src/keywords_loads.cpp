@@ -10,18 +10,6 @@ namespace hbm::deck::tables {
 
 namespace {
 
-KeywordSpec object(std::string_view kw, std::string_view meaning) {
-  KeywordSpec k;
-  k.keyword = kw;
-  k.section = Section::Starter;
-  k.id = IdKind::Object;
-  k.has_title = true;
-  k.meaning = meaning;
-  return k;
-}
-
-constexpr std::array<std::string_view, 10> kIdNames = {"id1", "id2", "id3", "id4", "id5",
-                                                       "id6", "id7", "id8", "id9", "id10"};
 constexpr std::array<std::string_view, 10> kVarNames = {"var1", "var2", "var3", "var4", "var5",
                                                         "var6", "var7", "var8", "var9", "var10"};
 

@@ -9,16 +9,6 @@ namespace hbm::deck::tables {
 
 namespace {
 
-KeywordSpec object(std::string_view kw, std::string_view meaning) {
-  KeywordSpec k;
-  k.keyword = kw;
-  k.section = Section::Starter;
-  k.id = IdKind::Object;
-  k.has_title = true;
-  k.meaning = meaning;
-  return k;
-}
-
 FieldSpec fct(std::string_view name, int col, std::string_view meaning) {
   return id_field(name, col, RefKind::Funct, false, meaning);
 }
