@@ -518,7 +518,7 @@ void Builder::build_pelvis() {
   const int N = torso_->n(), half = N / 2;
   const auto& pc = g_.shell_sections.at("pelvis_cortex");
   int cortex = part("pelvis_cortex", ElementKind::Shell, material("pelvis_cortical"), "pelvis", "pelvis", pc.total_thickness);
-  int joint = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", pc.total_thickness);
+  int joint_part = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", pc.total_thickness);
   const double z_pubis = g_.pelvis.at("pubic_symphysis").z(), z_isch = g_.pelvis.at("ischial_tuberosity_r").z();
   const double z_crest = std::max(g_.pelvis.at("asis_r").z(), g_.pelvis.at("iliac_tubercle_r").z());
   for (int l = 0; l + 1 < torso_->levels(); ++l) {
@@ -541,13 +541,13 @@ void Builder::build_pelvis() {
         bool si = j == jb;
         if (si && !sacral) continue;  // the posterior iliac edge is free above/below the sacrum
         auto q = torso_->ring_face(l, 1, jj);
-        shell(si ? joint : cortex, q);
+        shell(si ? joint_part : cortex, q);
         for (int n : q) pelvis_shell_nodes_.insert(n);
       }
     if (pubic)
       for (int jj : {0, N - 1}) {
         auto q = torso_->ring_face(l, 1, jj);
-        shell(joint, q);
+        shell(joint_part, q);
         for (int n : q) pelvis_shell_nodes_.insert(n);
       }
   }
