@@ -5,8 +5,8 @@
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_tools"))
-import radioss_deck as rd  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import ANIM_CONTACT, Deck  # noqa: E402
 
 NAME = "contact_block_slide"
 MU, G, V0, GAP = 0.3, 1.0, 0.3, 0.2     # -, mm/ms^2, mm/ms, mm
@@ -25,38 +25,34 @@ HEADER = [
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    s = rd.Starter(NAME, HEADER)
-    ng, bg, _ = rd.block_mesh(8, 3, 1, 2.0, (0.0, 0.0, -2.0), 1, 1)
-    n2, b2, _ = rd.block_mesh(2, 2, 2, 2.0, (2.0, 1.0, GAP), 1001, 1001)
-    n3, b3, _ = rd.block_mesh(2, 2, 2, 2.0, (30.0, 1.0, 0.0), 2001, 2001)
-    s.nodes(ng + n2 + n3)
-    s.bricks(1, bg)
-    s.bricks(2, b2)
-    s.bricks(3, b3)
-    s.part(1, "ground slab", 1, 1)
-    s.part(2, "block on slab", 1, 1)
-    s.part(3, "block on wall", 1, 1)
-    s.prop_solid(1, "bricks")
-    s.law1(1, "elastic", RHO, E, NU)
-    s.grnod_part(1, "ground", [1])
-    s.grnod_part(2, "block 2", [2])
-    s.grnod_part(3, "block 3", [3])
-    s.grnod_part(4, "blocks", [2, 3])
-    s.surf_part(1, "slab surface", [1])
-    s.bcs(1, "ground fixed", "111", 1)
-    s.inter7(1, "block on slab", 2, 1, fric=MU, gapmin=GAP, vis_s=0.3)
-    s.rwall_plane(1, "floor wall", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), slide=2, fric=MU, grnod1=3)
-    s.funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
-    s.grav(1, "scaled gravity", 1, "Z", 4, -G)
-    s.inivel(1, "slide", (V0, 0.0, 0.0), 4)
-    s.th("INTER", 1, "slab contact", ["DEF"], [1])
-    s.th("RWALL", 2, "wall", ["DEF"], [1])
-    s.th_nodes(3, "block velocities", ["VX", "VZ"], [(n[0], "") for n in n2 + n3])
-    s.write(os.path.join(here, f"{NAME}_0000.rad"))
-    rd.write_atomic(os.path.join(here, f"{NAME}_0001.rad"),
-                    rd.engine(NAME, HEADER[:1], tstop=0.9, dt_his=0.01, anim_dt=0.1))
-
+    d = Deck(NAME, HEADER)
+    _, bg = d.block(8, 3, 1, (16.0, 6.0, 2.0), (0.0, 0.0, -2.0))
+    g2, b2 = d.block(2, 2, 2, (4.0, 4.0, 4.0), (2.0, 1.0, GAP), first_node=1001, first_elem=1001)
+    g3, b3 = d.block(2, 2, 2, (4.0, 4.0, 4.0), (30.0, 1.0, 0.0), first_node=2001, first_elem=2001)
+    d.bricks(1, bg)
+    d.bricks(2, b2)
+    d.bricks(3, b3)
+    d.part(1, "ground slab", 1, 1)
+    d.part(2, "block on slab", 1, 1)
+    d.part(3, "block on wall", 1, 1)
+    d.prop_solid(1, "bricks")
+    d.law1(1, "elastic", RHO, E, NU)
+    d.grnod_part(1, "ground", [1])
+    d.grnod_part(2, "block 2", [2])
+    d.grnod_part(3, "block 3", [3])
+    d.grnod_part(4, "blocks", [2, 3])
+    d.surf_part(1, "slab surface", [1])
+    d.bcs(1, "ground fixed", "111", 1)
+    d.inter7(1, "block on slab", 2, 1, fric=MU, gapmin=GAP, vis_s=0.3)
+    d.rwall_plane(1, "floor wall", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), slide=2, fric=MU, grnod1=3)
+    d.funct(1, "constant", [(0.0, 1.0), (100.0, 1.0)])
+    d.grav(1, "scaled gravity", 1, "Z", 4, -G)
+    d.inivel(1, "slide", (V0, 0.0, 0.0), 4)
+    d.th("INTER", 1, "slab contact", ["DEF"], [1])
+    d.th("RWALL", 2, "wall", ["DEF"], [1])
+    d.th_nodes(3, "block velocities", ["VX", "VZ"], [(n, "") for n in [*g2.values(), *g3.values()]])
+    d.engine(0.9, 0.01, anim=0.1, anim_outputs=ANIM_CONTACT)
+    d.write()
 
 if __name__ == "__main__":
     main()

@@ -5,8 +5,8 @@
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_tools"))
-import radioss_deck as rd  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import ANIM_CONTACT, Deck  # noqa: E402
 
 NAME = "contact_blocks_collide"
 N, L, GAP0, V0 = 6, 10.0, 0.5, 5.0           # elements per edge, edge [mm], initial gap [mm], speed [mm/ms]
@@ -29,32 +29,26 @@ HEADER = [
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    s = rd.Starter(NAME, HEADER)
-    h = L / N
-    na, ba, ida = rd.block_mesh(N, N, N, h, (0.0, 0.0, 0.0), 1, 1)
-    off = len(na)
-    nb, bb, idb = rd.block_mesh(N, N, N, h, (L + GAP0, 0.0, 0.0), off + 1, len(ba) + 1)
-    s.nodes(na + nb)
-    s.bricks(1, ba)
-    s.bricks(2, bb)
-    s.part(1, "block A", 1, 1)
-    s.part(2, "block B", 1, 1)
-    s.prop_solid(1, "bricks", qa=0.0, qb=0.0)
-    s.law1(1, "soft elastic", RHO, E, NU)
-    s.grnod_part(1, "nodes of A", [1])
-    s.grnod_part(2, "nodes of B", [2])
-    s.surf_part(1, "surface of A", [1])
-    s.surf_part(2, "surface of B", [2])
-    s.inter7(1, "A nodes on B", 1, 2, gapmin=0.2, vis_s=0.0)
-    s.inter7(2, "B nodes on A", 2, 1, gapmin=0.2, vis_s=0.0)
-    s.inivel(1, "A moves", (V0, 0.0, 0.0), 1)
-    s.th("INTER", 1, "contact forces", ["DEF"], [1, 2])
-    s.th_nodes(2, "all node velocities", ["VX"], [(n[0], "") for n in na + nb])
-    s.write(os.path.join(here, f"{NAME}_0000.rad"))
-    rd.write_atomic(os.path.join(here, f"{NAME}_0001.rad"),
-                    rd.engine(NAME, HEADER[:1], tstop=0.8, dt_his=0.005, anim_dt=0.1))
-
+    d = Deck(NAME, HEADER)
+    ga, ba = d.block(N, N, N, (L, L, L), (0.0, 0.0, 0.0))
+    gb, bb = d.block(N, N, N, (L, L, L), (L + GAP0, 0.0, 0.0))
+    d.bricks(1, ba)
+    d.bricks(2, bb)
+    d.part(1, "block A", 1, 1)
+    d.part(2, "block B", 1, 1)
+    d.prop_solid(1, "bricks", qa=0.0, qb=0.0)
+    d.law1(1, "soft elastic", RHO, E, NU)
+    d.grnod_part(1, "nodes of A", [1])
+    d.grnod_part(2, "nodes of B", [2])
+    d.surf_part(1, "surface of A", [1])
+    d.surf_part(2, "surface of B", [2])
+    d.inter7(1, "A nodes on B", 1, 2, gapmin=0.2, vis_s=0.0)
+    d.inter7(2, "B nodes on A", 2, 1, gapmin=0.2, vis_s=0.0)
+    d.inivel(1, "A moves", (V0, 0.0, 0.0), 1)
+    d.th("INTER", 1, "contact forces", ["DEF"], [1, 2])
+    d.th_nodes(2, "all node velocities", ["VX"], [(n, "") for n in [*ga.values(), *gb.values()]])
+    d.engine(0.8, 0.005, anim=0.1, anim_outputs=ANIM_CONTACT)
+    d.write()
 
 if __name__ == "__main__":
     main()

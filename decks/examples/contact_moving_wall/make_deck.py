@@ -5,8 +5,8 @@
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_tools"))
-import radioss_deck as rd  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import ANIM_CONTACT, Deck  # noqa: E402
 
 NAME = "contact_moving_wall"
 N, L = 4, 10.0                      # elements per edge, block edge [mm]
@@ -26,23 +26,20 @@ HEADER = [
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    s = rd.Starter(NAME, HEADER)
-    nodes, bricks, _ = rd.block_mesh(N, N, N, L / N, (0.0, 0.0, 0.0), 1, 1)
-    s.nodes(nodes + [(WALL_NODE, -0.5, 0.5 * L, 0.5 * L)])
-    s.bricks(1, bricks)
-    s.part(1, "block", 1, 1)
-    s.prop_solid(1, "bricks")
-    s.law1(1, "soft elastic", RHO, E, NU)
-    s.grnod_part(1, "block nodes", [1])
-    s.rwall_plane(1, "moving wall", None, (1.0, 0.5 * L, 0.5 * L), grnod1=1,
+    d = Deck(NAME, HEADER)
+    grid, bricks = d.block(N, N, N, (L, L, L), (0.0, 0.0, 0.0))
+    d.node(-0.5, 0.5 * L, 0.5 * L, WALL_NODE)
+    d.bricks(1, bricks)
+    d.part(1, "block", 1, 1)
+    d.prop_solid(1, "bricks")
+    d.law1(1, "soft elastic", RHO, E, NU)
+    d.grnod_part(1, "block nodes", [1])
+    d.rwall_plane(1, "moving wall", None, (1.0, 0.5 * L, 0.5 * L), grnod1=1,
                   node=WALL_NODE, mass=MW, v0=(VW, 0.0, 0.0))
-    s.th("RWALL", 1, "wall force", ["DEF"], [1])
-    s.th_nodes(2, "velocities", ["VX"], [(WALL_NODE, "wall")] + [(n[0], "") for n in nodes])
-    s.write(os.path.join(here, f"{NAME}_0000.rad"))
-    rd.write_atomic(os.path.join(here, f"{NAME}_0001.rad"),
-                    rd.engine(NAME, HEADER[:1], tstop=2.0, dt_his=0.01, anim_dt=0.5))
-
+    d.th("RWALL", 1, "wall force", ["DEF"], [1])
+    d.th_nodes(2, "velocities", ["VX"], [(WALL_NODE, "wall")] + [(n, "") for n in grid.values()])
+    d.engine(2.0, 0.01, anim=0.5, anim_outputs=ANIM_CONTACT)
+    d.write()
 
 if __name__ == "__main__":
     main()

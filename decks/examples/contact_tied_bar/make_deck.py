@@ -6,8 +6,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_tools"))
-import radioss_deck as rd  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import ANIM_CONTACT, Deck  # noqa: E402
 
 NAME = "contact_tied_bar"
 RHO, E, NU = 1.0e-6, 1.0, 0.0          # c = sqrt(E/rho) = 1000 mm/ms, no lateral effect
@@ -28,38 +28,33 @@ HEADER = [
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    s = rd.Starter(NAME, HEADER)
+    d = Deck(NAME, HEADER)
     # Bar 1: left 40 x 4 x 4 (h 2.5), right 30 x 3 x 3 (h 3.333).
-    nl, bl, idl = rd.block_mesh(40, 4, 4, 2.5, (0.0, 0.0, 0.0), 1, 1)
-    hr = A / 3
-    nr, br, idr = rd.block_mesh(30, 3, 3, (LH / 30, hr, hr), (LH, 0.0, 0.0), 10001, 10001)
+    gl, bl = d.block(40, 4, 4, (LH, A, A), (0.0, 0.0, 0.0))
+    gr, br = d.block(30, 3, 3, (LH, A, A), (LH, 0.0, 0.0), first_node=10001, first_elem=10001)
     # Bar 2 (control): 80 x 4 x 4.
-    nc, bc, idc = rd.block_mesh(80, 4, 4, 2.5, (0.0, 30.0, 0.0), 20001, 20001)
-    s.nodes(nl + nr + nc)
-    s.bricks(1, bl)
-    s.bricks(2, br)
-    s.bricks(3, bc)
-    s.part(1, "bar 1 left 4x4", 1, 1)
-    s.part(2, "bar 1 right 3x3", 1, 1)
-    s.part(3, "bar 2 control", 1, 1)
-    s.prop_solid(1, "bricks")
-    s.law1(1, "elastic", RHO, E, NU)
-    s.grnod_node(1, "right part nodes at x = 100", [idr(0, j, k) for k in range(4) for j in range(4)])
-    s.surf_part(1, "left part faces", [1])
-    s.inter2(1, "tie", 1, 1, dsearch=0.1)
-    s.grnod_node(2, "loaded ends", [idl(0, j, k) for k in range(5) for j in range(5)] +
-                 [idc(0, j, k) for k in range(5) for j in range(5)])
+    gc, bc = d.block(80, 4, 4, (2 * LH, A, A), (0.0, 30.0, 0.0), first_node=20001, first_elem=20001)
+    d.bricks(1, bl)
+    d.bricks(2, br)
+    d.bricks(3, bc)
+    d.part(1, "bar 1 left 4x4", 1, 1)
+    d.part(2, "bar 1 right 3x3", 1, 1)
+    d.part(3, "bar 2 control", 1, 1)
+    d.prop_solid(1, "bricks")
+    d.law1(1, "elastic", RHO, E, NU)
+    d.grnod_node(1, "right part nodes at x = 100", [gr[(0, j, k)] for k in range(4) for j in range(4)])
+    d.surf_part(1, "left part faces", [1])
+    d.inter2(1, "tie", 1, 1, dsearch=0.1)
+    d.grnod_node(2, "loaded ends", [gl[(0, j, k)] for k in range(5) for j in range(5)] +
+                 [gc[(0, j, k)] for k in range(5) for j in range(5)])
     pts = [(T * i / 40, V * math.sin(math.pi * i / 40)) for i in range(41)] + [(1.0, 0.0)]
-    s.funct(1, "half-sine pulse", pts)
-    s.impvel(1, "pulse", 1, "X", 2, 1.0)
-    s.th_nodes(2, "gauges", ["VX"], [(idl(20, 2, 2), "bar1 x50"), (idr(15, 1, 1), "bar1 x150"),
-                                     (idc(20, 2, 2), "control x50"), (idc(60, 2, 2), "control x150")])
-    s.th("INTER", 3, "tie force", ["DEF"], [1])
-    s.write(os.path.join(here, f"{NAME}_0000.rad"))
-    rd.write_atomic(os.path.join(here, f"{NAME}_0001.rad"),
-                    rd.engine(NAME, HEADER[:1], tstop=0.3, dt_his=0.001, anim_dt=0.05))
-
+    d.funct(1, "half-sine pulse", pts)
+    d.impvel(1, "pulse", 1, "X", 2, 1.0)
+    d.th_nodes(2, "gauges", ["VX"], [(gl[(20, 2, 2)], "bar1 x50"), (gr[(15, 1, 1)], "bar1 x150"),
+                                     (gc[(20, 2, 2)], "control x50"), (gc[(60, 2, 2)], "control x150")])
+    d.th("INTER", 3, "tie force", ["DEF"], [1])
+    d.engine(0.3, 0.001, anim=0.05, anim_outputs=ANIM_CONTACT)
+    d.write()
 
 if __name__ == "__main__":
     main()

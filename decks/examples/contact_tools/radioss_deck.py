@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Minimal writer of Radioss block-format decks (fixed columns, as in docs/deck-format.md)
-used by the contact verification deck generators (decks/examples/contact_*/make_deck.py).
+"""Superseded by decks/examples/deck_tools/radioss_deck.py, the one writer of the example
+decks; kept only while decks/examples/contact_sphere_rwall/make_deck.py imports it (delete
+this folder once that generator uses deck_tools: the same cards, /PART without the blank
+thickness field).
+Minimal writer of Radioss block-format decks (fixed columns, as in docs/deck-format.md).
 Integers in 10 columns, reals in 20 columns, right-aligned. Files are written to a
 temporary name and renamed when complete."""
 

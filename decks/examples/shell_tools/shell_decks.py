@@ -5,54 +5,40 @@
 the analytic value, the tolerance and how to run it; ctest/solver/shelldecks_run_verification.cpp
 runs them through hbm-solver. Regenerate with:
     python3 decks/examples/shell_tools/shell_decks.py
-Units: kg, mm, ms (force kN, stress GPa, energy J). Uses the engine decks' writer
-(decks/examples/engine_tools/engine_decks.py) for the common cards."""
+Units: kg, mm, ms (force kN, stress GPa, energy J). Cards are written by
+decks/examples/deck_tools/radioss_deck.py."""
 
 import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "engine_tools"))
-from engine_decks import Deck, f20, i10  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import Deck, run_line  # noqa: E402
 
-RUN = "Run: hbm-solver decks/examples/{0}/{0}_0000.rad --out out/{0}"
 CHECK = "Checked by ctest/solver/shelldecks_run_verification.cpp (label verification)."
 
 
-class ShellDeck(Deck):
-    def strip(self, nx, ny, L, b, tria, z=0.0):
-        """Flat strip [0, L] x [0, b]; returns node grid {(i, j): id} and elements."""
-        grid = {}
-        for i in range(nx + 1):
-            for j in range(ny + 1):
-                grid[(i, j)] = self.node(L * i / nx, b * j / ny, z)
-        elems = []
-        for i in range(nx):
-            for j in range(ny):
-                a, bb, c, d = grid[(i, j)], grid[(i + 1, j)], grid[(i + 1, j + 1)], grid[(i, j + 1)]
-                if not tria:
-                    elems.append((self.next_elem, [a, bb, c, d]))
-                    self.next_elem += 1
-                elif (i + j) % 2 == 0:
-                    elems += [(self.next_elem, [a, bb, c]), (self.next_elem + 1, [a, c, d])]
-                    self.next_elem += 2
-                else:
-                    elems += [(self.next_elem, [a, bb, d]), (self.next_elem + 1, [bb, c, d])]
-                    self.next_elem += 2
-        return grid, elems
-
-    def shells(self, part, elems, tria):
-        kw = "/SH3N" if tria else "/SHELL"
-        self.card(f"{kw}/{part}", None, [i10(e) + "".join(i10(n) for n in ns) for e, ns in elems])
-
-    def prop1(self, pid, title, thick, n_points, hm=0.01, hf=0.01, hr=0.01, p_thick_fail=0.0):
-        self.card(f"/PROP/TYPE1/{pid}", title, [
-            i10(0) + i10(0) + i10(0) + i10(0) + i10(0) + " " * 10 + f20(p_thick_fail),
-            f20(hm) + f20(hf) + f20(hr) + f20(0) + f20(0),
-            i10(n_points) + i10(0) + f20(thick) + f20(5.0 / 6.0) + " " * 10 + i10(0) + i10(1)])
-
-    def bcs6(self, bid, title, tra, rot, grnod):
-        self.card(f"/BCS/{bid}", title, [f"   {tra:3s} {rot:3s}" + i10(0) + i10(grnod)])
+def strip(d, nx, ny, L, b, tria, z=0.0):
+    """Flat strip [0, L] x [0, b] of nx x ny quads (or pairs of triangles, diagonals
+    alternating); returns node grid {(i, j): id} and elements."""
+    grid = {}
+    for i in range(nx + 1):
+        for j in range(ny + 1):
+            grid[(i, j)] = d.node(L * i / nx, b * j / ny, z)
+    elems = []
+    for i in range(nx):
+        for j in range(ny):
+            a, bb, c, e = grid[(i, j)], grid[(i + 1, j)], grid[(i + 1, j + 1)], grid[(i, j + 1)]
+            if not tria:
+                cells = [[a, bb, c, e]]
+            elif (i + j) % 2 == 0:
+                cells = [[a, bb, c], [a, c, e]]
+            else:
+                cells = [[a, bb, e], [bb, c, e]]
+            for ns in cells:
+                elems.append((d.next_elem, ns))
+                d.next_elem += 1
+    return grid, elems
 
 
 def cantilever_grav(tria):
@@ -64,25 +50,25 @@ def cantilever_grav(tria):
     g = 8 * E * I * delta / (rho * A * L ** 4)
     f1 = 1.87510407 ** 2 / (2 * math.pi * L ** 2) * math.sqrt(E * I / (rho * A))
     elem = "SH3N triangles (CST + DKT)" if tria else "SHELL quads (Belytschko-Tsay)"
-    d = ShellDeck(name, [
+    d = Deck(name, [
         f"{name}: cantilever plate strip L = {L} mm, b = {b} mm, t = {t} mm, {nx} x {ny} {elem},",
         f"steel LAW1 (E = {E} GPa, nu = {nu}), clamped at x = 0, gravity g = {g:.6f} mm/ms^2 applied",
         "suddenly at t = 0 (/GRAV, -Z). What it shows: the tip oscillates about the static",
         f"deflection q L^4 / (8 E I) = {delta:.6f} mm (q = rho g b t, I = b t^3 / 12; its mean over whole",
         f"periods) at the first bending frequency f1 = 1.8751^2/(2 pi L^2) sqrt(E I/(rho b t)) = {f1:.6f} kHz.",
-        "Tolerance 3% on both.", RUN.format(name), CHECK])
-    grid, el = d.strip(nx, ny, L, b, tria)
+        "Tolerance 3% on both.", run_line(name), CHECK])
+    grid, el = strip(d, nx, ny, L, b, tria)
     d.law1(1, "steel", rho, E, nu)
-    d.prop1(1, "plate 1 mm", t, 3)
+    d.prop_shell(1, "plate 1 mm", t, 3)
     d.part(1, "strip", 1, 1)
-    d.shells(1, el, tria)
-    d.grnod(1, "clamped end", [grid[(0, j)] for j in range(ny + 1)])
-    d.grnod(2, "all nodes", sorted(grid.values()))
-    d.bcs6(1, "clamp", "111", "111", 1)
+    d.shells(1, el)
+    d.grnod_node(1, "clamped end", [grid[(0, j)] for j in range(ny + 1)])
+    d.grnod_node(2, "all nodes", sorted(grid.values()))
+    d.bcs(1, "clamp", "111", 1, rot="111")
     d.funct(1, "constant", [(0, 1), (1000, 1)])
     d.grav(1, "gravity", 1, "Z", 2, -g)
     d.th_nodes(1, "tip", ["DZ"], [(grid[(nx, ny // 2)], "tip middle")])
-    d.th_parts(2, "energies", ["IE", "KE", "HE"], [1])
+    d.th("PART", 2, "energies", ["IE", "KE", "HE"], [1])
     d.engine(round(4.2 / f1, 3), 2.0e-3, anim=round(1.0 / f1, 3), print_every=5000)
     d.write()
 
@@ -96,30 +82,30 @@ def pull_failure(tria):
     eps_f = epsmax + (a + bh * epsmax ** n) / E
     u_f = L * (math.exp(eps_f) - 1)
     elem = "SH3N triangles (CST + DKT)" if tria else "SHELL quads (Belytschko-Tsay)"
-    d = ShellDeck(name, [
+    d = Deck(name, [
         f"{name}: strip {L} x {b} x {t} mm, {nx} x {ny} {elem}, LAW2 a = {a}, b = {bh}, n = {n},",
         f"EPS_p_max = {epsmax}; end x = 0 held in X, end x = L pulled at {v} mm/ms (ramped over 0.2 ms).",
         "What it shows: shells are deleted when their points reach EPS_p_max, i.e. at the log strain",
         f"eps_p_max + sigma_y(eps_p_max)/E = {eps_f:.6f}, end displacement {u_f:.4f} mm (tolerance 1%);",
         "the part's eroded count (TH/PART ER) rises, the animation frames flag the deleted cells",
         "(cell field 'eroded'), and the energy balance still closes within 1% afterwards.",
-        RUN.format(name), CHECK])
-    grid, el = d.strip(nx, ny, L, b, tria)
+        run_line(name), CHECK])
+    grid, el = strip(d, nx, ny, L, b, tria)
     d.law2(1, "steel JC", rho, E, nu, a, bh, n, epsmax)
-    d.prop1(1, "plate 1 mm", t, 3)
+    d.prop_shell(1, "plate 1 mm", t, 3)
     d.part(1, "strip", 1, 1)
-    d.shells(1, el, tria)
-    d.grnod(1, "held end", [grid[(0, j)] for j in range(ny + 1)])
-    d.grnod(2, "pulled end", [grid[(nx, j)] for j in range(ny + 1)])
-    d.grnod(3, "corner", [grid[(0, 0)]])
-    d.grnod(4, "all nodes", sorted(grid.values()))
-    d.bcs6(1, "held X", "100", "000", 1)
-    d.bcs6(2, "corner Y", "010", "000", 3)
-    d.bcs6(3, "in plane", "001", "000", 4)
+    d.shells(1, el)
+    d.grnod_node(1, "held end", [grid[(0, j)] for j in range(ny + 1)])
+    d.grnod_node(2, "pulled end", [grid[(nx, j)] for j in range(ny + 1)])
+    d.grnod_node(3, "corner", [grid[(0, 0)]])
+    d.grnod_node(4, "all nodes", sorted(grid.values()))
+    d.bcs(1, "held X", "100", 1)
+    d.bcs(2, "corner Y", "010", 3)
+    d.bcs(3, "in plane", "001", 4)
     d.funct(1, "ramp", [(0, 0), (0.2, 1), (1000, 1)])
     d.impvel(1, "pull", 1, "X", 2, v)
     d.th_nodes(1, "pulled end", ["DX"], [(grid[(nx, 0)], "pulled corner")])
-    d.th_parts(2, "strip", ["IE", "KE", "ER"], [1])
+    d.th("PART", 2, "strip", ["IE", "KE", "ER"], [1])
     d.engine(round(u_f / v + 0.6, 3), 5.0e-3, anim=0.25, print_every=5000)
     d.write()
 

@@ -10,101 +10,63 @@ Units: kg, mm, ms (force kN, moment kN mm, energy J)."""
 
 import math
 import os
+import sys
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import Deck, run_line  # noqa: E402
+
 DT = 1.5e-3  # ms, the body model's fixed step
 
 
-def i10(v):
-    return f"{int(v):>10d}"
+class Case(Deck):
+    """A spring or rigid-body case: object ids given in order of creation, per kind; the
+    engine file runs at the fixed step (nodal time step control Tsca 0.9, Tmin = DT)."""
 
-
-def f20(v):
-    return f"{float(v):>20.12E}"
-
-
-def t10(s):
-    return f"{s:>10}"
-
-
-class Deck:
     def __init__(self, name, header, t_stop, th_dt):
-        self.name = name
-        self.header = header
-        self.s = ["#RADIOSS STARTER"] + ["# " + h if h else "#" for h in header]
-        self.s += ["/BEGIN", name, i10(2024) + i10(0),
-                   f"{'kg':>20}{'mm':>20}{'ms':>20}", f"{'kg':>20}{'mm':>20}{'ms':>20}"]
-        self.nodes = []
-        self.body = []
-        self.t_stop, self.th_dt = t_stop, th_dt
-        self.ids = {}
+        super().__init__(name, header)
+        self.engine_card(f"/RUN/{name}/1", t_stop)
+        self.engine_card("/TFILE/4", th_dt)
+        self.engine_card("/DT/NODA/CST/0", 0.9, DT)
+        self.engine_card("/PRINT/-20000")
 
-    def next_id(self, kind):
-        self.ids[kind] = self.ids.get(kind, 0) + 1
-        return self.ids[kind]
-
-    def node(self, x, y, z):
-        self.nodes.append((x, y, z))
-        return len(self.nodes)
-
-    def card(self, kw, title=None, lines=()):
-        self.body.append(kw)
-        if title is not None:
-            self.body.append(title)
-        self.body.extend(lines)
-
-    def grnod(self, title, nodes):
+    def group(self, title, nodes):
         gid = self.next_id("grnod")
-        rows = ["".join(i10(n) for n in nodes[k:k + 10]) for k in range(0, len(nodes), 10)]
-        self.card(f"/GRNOD/NODE/{gid}", title, rows)
+        self.grnod_node(gid, title, nodes)
         return gid
 
-    def funct(self, title, pts):
+    def function(self, title, pts):
         fid = self.next_id("funct")
-        self.card(f"/FUNCT/{fid}", title, [f20(x) + f20(y) for x, y in pts])
+        self.funct(fid, title, pts)
         return fid
 
-    def dof_block(self, k=0.0, c=0.0, fct1=0, h=0, fct3=0):
-        return [f20(k) + f20(c) + f20(1.0) + f20(0.0) + f20(1.0),
-                i10(fct1) + i10(h) + i10(0) + i10(fct3) + i10(0),
-                f20(1.0) + f20(0.0) + f20(1.0) + f20(1.0)]
-
-    def spring_part(self, title, prop_kw, prop_lines):
+    def spring_part(self, title, kind, mass, dofs, inertia=0.0):
+        """Spring property (/PROP/TYPE4 with one DOF block, TYPE8 or TYPE13 with six) and
+        its part. mat_id 0: a spring's law is its property (Radioss spring parts need no
+        material)."""
         pid = self.next_id("part")
-        self.card(f"{prop_kw}/{pid}", title + " property", prop_lines)
-        # mat_id 0: a spring's law is its property (Radioss spring parts need no material).
-        self.card(f"/PART/{pid}", title, [i10(pid) + i10(0) + i10(0)])
+        if kind == 4:
+            self.prop_spring4(pid, title + " property", mass, dofs[0])
+        else:
+            self.prop_spring6(kind, pid, title + " property", mass, inertia, dofs)
+        self.part(pid, title, pid, 0)
         return pid
 
-    def springs(self, part, pairs):
-        rows = []
-        for a, b in pairs:
-            rows.append(i10(self.next_id("spring")) + i10(a) + i10(b))
-        self.card(f"/SPRING/{part}", None, rows)
-        return list(range(self.ids["spring"] - len(pairs) + 1, self.ids["spring"] + 1))
+    def fix(self, title, trans, rot, nodes):
+        self.bcs(self.next_id("bcs"), title, trans, self.group(title + " nodes", nodes), rot=rot)
 
-    def bcs(self, title, trans, rot, nodes):
-        g = self.grnod(title + " nodes", nodes)
-        self.card(f"/BCS/{self.next_id('bcs')}", title, [f"   {trans} {rot}" + i10(0) + i10(g)])
+    def launch(self, title, v, nodes):
+        self.inivel(self.next_id("inivel"), title, v, self.group(title + " nodes", nodes))
 
-    def inivel(self, title, v, nodes):
-        g = self.grnod(title + " nodes", nodes)
-        self.card(f"/INIVEL/TRA/{self.next_id('inivel')}", title, [f20(v[0]) + f20(v[1]) + f20(v[2]) + i10(g)])
+    def drive(self, title, fct, direction, nodes, scale=1.0, t_stop=0.0):
+        self.impvel(self.next_id("impvel"), title, fct, direction, self.group(title + " nodes", nodes),
+                    scale, tstop=t_stop)
 
-    def impvel(self, title, fct, direction, nodes, scale=1.0, t_stop=0.0):
-        g = self.grnod(title + " nodes", nodes)
-        self.card(f"/IMPVEL/{self.next_id('impvel')}", title,
-                  [i10(fct) + t10(direction) + i10(0) + i10(0) + i10(g) + i10(0) + i10(0),
-                   f20(1.0) + f20(scale) + f20(0.0) + f20(t_stop)])
-
-    def th(self, kw, title, variables, objects):
-        tid = self.next_id("th" + kw)
-        lines = ["".join(t10(v) for v in variables)]
-        if kw == "/TH/NODE":
-            lines += [i10(n) + i10(0) + f"{name:<80}" for n, name in objects]
+    def history(self, kind, title, variables, objects):
+        tid = self.next_id("th" + kind)
+        if kind == "NODE":
+            self.th_nodes(tid, title, variables, objects)
         else:
-            lines += ["".join(i10(o) for o in objects[k:k + 10]) for k in range(0, len(objects), 10)]
-        self.card(f"{kw}/{tid}", title, lines)
+            self.th(kind, tid, title, variables, objects)
 
     def brick_rbody(self, title, a, b, c, rho, centre, omega, v0=(0.0, 0.0, 0.0)):
         """One brick a x b x c (mm) of density rho centred at `centre`, made a rigid body
@@ -119,60 +81,40 @@ class Deck:
         ids = [self.node(*p) for p in corners]
         main = self.node(centre[0] + 0.1 * a, centre[1], centre[2])  # moved to the centre
         pid = self.next_id("part")
-        self.card(f"/MAT/LAW1/{100 + pid}", title + " material", [f20(rho), f20(1.0) + f20(0.3)])
-        self.card(f"/PROP/TYPE14/{pid}", title + " solid", [i10(0), f20(1.1) + f20(0.05) + f20(0.1)])
-        self.card(f"/PART/{pid}", title, [i10(pid) + i10(100 + pid) + i10(0)])
-        self.card(f"/BRICK/{pid}", None, [i10(self.next_id("brick")) + "".join(i10(ids[o]) for o in order)])
-        g = self.grnod(title + " secondary nodes", ids)
+        self.law1(100 + pid, title + " material", rho, 1.0, 0.3)
+        self.prop_solid(pid, title + " solid")
+        self.part(pid, title, pid, 100 + pid)
+        self.bricks(pid, [(self.next_id("brick"), [ids[o] for o in order])])
+        g = self.group(title + " secondary nodes", ids)
         rid = self.next_id("rbody")
-        self.card(f"/RBODY/{rid}", title,
-                  [i10(main) + i10(0) + i10(0) + i10(0) + f20(0.0) + i10(g) + i10(0) + i10(1) + i10(0)])
+        self.rbody(rid, title, main, g)
         for n, p in zip(ids, corners):
             r = [p[q] - centre[q] for q in range(3)]
             v = [v0[0] + omega[1] * r[2] - omega[2] * r[1],
                  v0[1] + omega[2] * r[0] - omega[0] * r[2],
                  v0[2] + omega[0] * r[1] - omega[1] * r[0]]
-            self.inivel(f"{title} node {n}", v, [n])
+            self.launch(f"{title} node {n}", v, [n])
         return rid, main
-
-    def write(self):
-        folder = os.path.join(ROOT, self.name)
-        os.makedirs(folder, exist_ok=True)
-        starter = self.s + ["/NODE"] + [i10(k + 1) + f20(x) + f20(y) + f20(z) for k, (x, y, z) in enumerate(self.nodes)]
-        starter += self.body + ["/END", ""]
-        engine = ["#RADIOSS ENGINE"] + ["# " + h for h in self.header[:1]]
-        engine += [f"/RUN/{self.name}/1", f"{self.t_stop}", "/TFILE/4", f"{self.th_dt}",
-                   "/DT/NODA/CST/0", f"{0.9} {DT}", "/PRINT/-20000", ""]
-        for suffix, text in (("_0000.rad", starter), ("_0001.rad", engine)):
-            path = os.path.join(folder, self.name + suffix)
-            with open(path + ".tmp", "w") as f:
-                f.write("\n".join(text))
-            os.replace(path + ".tmp", path)
-
-
-def run_line(name):
-    return f"Run: hbm-solver decks/examples/{name}/{name}_0000.rad --out out/{name}"
 
 
 def springs_mass_period():
     name = "springs_mass_period"
     K, m = 10.0, 1.0
     T = 2 * math.pi * math.sqrt(m / K)
-    d = Deck(name, [f"{name}: a 1 kg mass on a /PROP/TYPE4 linear spring K = {K} kN/mm (spring Mass 2 kg,",
+    d = Case(name, [f"{name}: a 1 kg mass on a /PROP/TYPE4 linear spring K = {K} kN/mm (spring Mass 2 kg,",
                     "half on each node; node 1 fixed by /BCS), launched at 1 mm/ms, step 1.5e-3 ms.",
                     f"What it shows: period T = 2 pi sqrt(m/K) = {T:.6f} ms (checked to 0.5 %), spring",
                     "force FX = K LX at every output (1e-9), amplitude v0/omega (0.5 %).",
                     run_line(name),
                     "Checked by ctest/solver/springs_decks_verification.cpp (label verification)."], 10.0, 0.005)
     n1, n2 = d.node(0, 0, 0), d.node(100, 0, 0)
-    p = d.spring_part("linear spring", "/PROP/TYPE4",
-                      [f20(2.0 * m) + i10(0) + i10(0) + i10(0)] + d.dof_block(k=K))
+    p = d.spring_part("linear spring", 4, 2.0 * m, [d.spring_dof(k=K)])
     d.springs(p, [(n1, n2)])
-    d.bcs("fixed end", "111", "111", [n1])
-    d.bcs("guided mass", "011", "000", [n2])
-    d.inivel("launch", (1.0, 0, 0), [n2])
-    d.th("/TH/NODE", "mass", ["DX", "VX"], [(n2, "mass")])
-    d.th("/TH/SPRING", "spring", ["FX", "LX", "IE"], [1])
+    d.fix("fixed end", "111", "111", [n1])
+    d.fix("guided mass", "011", "000", [n2])
+    d.launch("launch", (1.0, 0, 0), [n2])
+    d.history("NODE", "mass", ["DX", "VX"], [(n2, "mass")])
+    d.history("SPRING", "spring", ["FX", "LX", "IE"], [1])
     d.write()
 
 
@@ -180,7 +122,7 @@ def springs_damping():
     name = "springs_damping"
     K, m, zeta = 10.0, 1.0, 0.05
     C = 2 * zeta * math.sqrt(K * m)
-    d = Deck(name, [f"{name}: a 1 kg mass on a /PROP/TYPE4 spring K = {K} kN/mm with damping",
+    d = Case(name, [f"{name}: a 1 kg mass on a /PROP/TYPE4 spring K = {K} kN/mm with damping",
                     f"C = {C:.8f} kN ms/mm (zeta = {zeta}), launched at 1 mm/ms; node 1 fixed.",
                     f"What it shows: logarithmic decrement 2 pi zeta / sqrt(1 - zeta^2) = "
                     f"{2 * math.pi * zeta / math.sqrt(1 - zeta * zeta):.6f} (1 %) and damped",
@@ -188,13 +130,12 @@ def springs_damping():
                     run_line(name),
                     "Checked by ctest/solver/springs_decks_verification.cpp (label verification)."], 12.0, 0.002)
     n1, n2 = d.node(0, 0, 0), d.node(50, 0, 0)
-    p = d.spring_part("damped spring", "/PROP/TYPE4",
-                      [f20(2.0 * m) + i10(0) + i10(0) + i10(0)] + d.dof_block(k=K, c=C))
+    p = d.spring_part("damped spring", 4, 2.0 * m, [d.spring_dof(k=K, c=C)])
     d.springs(p, [(n1, n2)])
-    d.bcs("fixed end", "111", "111", [n1])
-    d.bcs("guided mass", "011", "000", [n2])
-    d.inivel("launch", (1.0, 0, 0), [n2])
-    d.th("/TH/NODE", "mass", ["DX"], [(n2, "mass")])
+    d.fix("fixed end", "111", "111", [n1])
+    d.fix("guided mass", "011", "000", [n2])
+    d.launch("launch", (1.0, 0, 0), [n2])
+    d.history("NODE", "mass", ["DX"], [(n2, "mass")])
     d.write()
 
 
@@ -202,7 +143,7 @@ def springs_torsion():
     name = "springs_torsion"
     K, J = 50.0, 2.0
     T = 2 * math.pi * math.sqrt(J / K)
-    d = Deck(name, [f"{name}: torsion springs K4 = {K} kN mm/rad on a node of inertia J = {J} kg mm^2",
+    d = Case(name, [f"{name}: torsion springs K4 = {K} kN mm/rad on a node of inertia J = {J} kg mm^2",
                     "(spring Inertia 4, half per node), one /PROP/TYPE8 (part 1) and one /PROP/TYPE13",
                     "(part 2); node 1 of each fixed; node 2 spun about X by /IMPVEL (0.5 rad/ms until",
                     "0.1 ms), then free.",
@@ -210,26 +151,24 @@ def springs_torsion():
                     "torsion moment MX = K4 RX (1e-9).",
                     run_line(name),
                     "Checked by ctest/solver/springs_decks_verification.cpp (label verification)."], 6.0, 0.002)
-    one = d.funct("constant", [(0.0, 1.0), (100.0, 1.0)])
-    line1_8 = f20(2.0) + f20(2.0 * J) + i10(0) + i10(0) + i10(0) + i10(0) + i10(0) + i10(0)
-    blocks = []
-    for dof in range(6):
-        blocks += d.dof_block(k=K if dof == 3 else 0.0)
-    for kw in ("/PROP/TYPE8", "/PROP/TYPE13"):
+    one = d.function("constant", [(0.0, 1.0), (100.0, 1.0)])
+    dofs = [d.spring_dof(k=K if dof == 3 else 0.0) for dof in range(6)]  # DOF 4: torsion about X
+    for kind in (8, 13):
+        kw = f"/PROP/TYPE{kind}"
         a = d.node(0, 0, 10 * len(d.nodes))
         b = d.node(10, 0, 10 * (len(d.nodes) - 1))
-        p = d.spring_part("torsion spring " + kw[6:], kw, [line1_8] + blocks)
+        p = d.spring_part("torsion spring " + kw[6:], kind, 2.0, dofs, inertia=2.0 * J)
         d.springs(p, [(a, b)])
-        d.bcs(f"fixed end {kw[6:]}", "111", "111", [a])
-        d.bcs(f"torsion only {kw[6:]}", "111", "011", [b])
-        d.impvel(f"spin {kw[6:]}", one, "XX", [b], scale=0.5, t_stop=0.1)
-    d.th("/TH/SPRING", "torsion springs", ["MX", "RX"], [1, 2])
+        d.fix(f"fixed end {kw[6:]}", "111", "111", [a])
+        d.fix(f"torsion only {kw[6:]}", "111", "011", [b])
+        d.drive(f"spin {kw[6:]}", one, "XX", [b], scale=0.5, t_stop=0.1)
+    d.history("SPRING", "torsion springs", ["MX", "RX"], [1, 2])
     d.write()
 
 
 def springs_nonlinear():
     name = "springs_nonlinear"
-    d = Deck(name, ["springs_nonlinear: /PROP/TYPE4 springs driven at 2 mm/ms by /IMPVEL for 2 ms, then",
+    d = Case(name, ["springs_nonlinear: /PROP/TYPE4 springs driven at 2 mm/ms by /IMPVEL for 2 ms, then",
                     "back at -2 mm/ms for 2 ms. Part 1: nonlinear elastic (H=0) stiffening curve;",
                     "part 2: elastoplastic with isotropic hardening (H=1, K = 5 kN/mm, yield curve",
                     "1 + 0.5 x kN).",
@@ -239,19 +178,18 @@ def springs_nonlinear():
                     "read from the time history written every cycle: 4 - 2.9/5 = 3.42 mm for d_pk = 4).",
                     run_line(name),
                     "Checked by ctest/solver/springs_decks_verification.cpp (label verification)."], 4.0, DT)
-    f = d.funct("stiffening force vs elongation [kN, mm]",
+    f = d.function("stiffening force vs elongation [kN, mm]",
                 [(-4, -12), (-2, -3), (-1, -0.8), (0, 0), (1, 0.8), (2, 3), (4, 12)])
-    y = d.funct("yield force vs equivalent elongation [kN, mm]", [(-100.2, -51), (-0.2, -1.0), (0.2, 1.0), (100.2, 51)])
-    v = d.funct("drive velocity [mm/ms]", [(0, 2), (2, 2), (2.0000001, -2), (100, -2)])
+    y = d.function("yield force vs equivalent elongation [kN, mm]", [(-100.2, -51), (-0.2, -1.0), (0.2, 1.0), (100.2, 51)])
+    v = d.function("drive velocity [mm/ms]", [(0, 2), (2, 2), (2.0000001, -2), (100, -2)])
     for title, fct, h, K in (("nonlinear elastic", f, 0, 1.0), ("elastoplastic", y, 1, 5.0)):
         a, b = d.node(0, 10 * len(d.nodes), 0), d.node(20, 10 * (len(d.nodes) - 1), 0)
-        p = d.spring_part(title, "/PROP/TYPE4",
-                          [f20(0.002) + i10(0) + i10(0) + i10(0)] + d.dof_block(k=K, fct1=fct, h=h))
+        p = d.spring_part(title, 4, 0.002, [d.spring_dof(k=K, fct1=fct, h=h)])
         d.springs(p, [(a, b)])
-        d.bcs(f"{title} fixed end", "111", "111", [a])
-        d.bcs(f"{title} guided end", "011", "000", [b])
-        d.impvel(f"{title} drive", v, "X", [b])
-    d.th("/TH/SPRING", "springs", ["FX", "LX"], [1, 2])
+        d.fix(f"{title} fixed end", "111", "111", [a])
+        d.fix(f"{title} guided end", "011", "000", [b])
+        d.drive(f"{title} drive", v, "X", [b])
+    d.history("SPRING", "springs", ["FX", "LX"], [1, 2])
     d.write()
 
 
@@ -260,7 +198,7 @@ def rigid_tumbling():
     a, b, c, rho = 10.0, 20.0, 30.0, 1e-5
     M = rho * a * b * c
     w = (0.03, -0.02, 0.05)
-    d = Deck(name, [f"{name}: a rigid body (/RBODY on the 8 corner nodes of one {a} x {b} x {c} mm brick,",
+    d = Case(name, [f"{name}: a rigid body (/RBODY on the 8 corner nodes of one {a} x {b} x {c} mm brick,",
                     f"rho = {rho} kg/mm^3, M = {M} kg, corner masses M/8) tumbling freely at",
                     f"omega = {w} rad/ms for 1e5 cycles of 1.5e-3 ms (150 ms).",
                     "What it shows: the free rigid body invariants are conserved by the symplectic",
@@ -269,7 +207,7 @@ def rigid_tumbling():
                     run_line(name),
                     "Checked by ctest/solver/springs_decks_verification.cpp (label verification)."], 150.0, 0.5)
     d.brick_rbody("tumbling body", a, b, c, rho, (0.0, 0.0, 0.0), w)
-    d.th("/TH/RBODY", "body", ["AMX", "AMY", "AMZ", "WX", "WY", "WZ", "KE"], [1])
+    d.history("RBODY", "body", ["AMX", "AMY", "AMZ", "WX", "WY", "WZ", "KE"], [1])
     d.write()
 
 
@@ -280,7 +218,7 @@ def rigid_intermediate_axis():
     W, eps, v0 = 0.2, 1e-6, 2.0
     Jxx, Jyy, Jzz = M * (b * b + c * c) / 4, M * (a * a + c * c) / 4, M * (a * a + b * b) / 4
     lam = W * math.sqrt((Jxx - Jyy) * (Jyy - Jzz) / (Jxx * Jzz))
-    d = Deck(name, [f"{name}: three identical rigid boxes {a} x {b} x {c} mm (one brick each, corner",
+    d = Case(name, [f"{name}: three identical rigid boxes {a} x {b} x {c} mm (one brick each, corner",
                     f"masses M/8, M = {M} kg), spun at {W} rad/ms about X (major axis, body 1, also",
                     f"translating at {v0} mm/ms), Y (intermediate, body 2) and Z (minor, body 3), each",
                     f"with a {eps} relative perturbation on the two other axes; 180 ms.",
@@ -296,14 +234,14 @@ def rigid_intermediate_axis():
         w[axis] = W
         d.brick_rbody(f"spin about {'XYZ'[axis]}", a, b, c, rho, (0.0, 100.0 * k, 0.0), w,
                       (v0, 0.0, 0.0) if axis == 0 else (0.0, 0.0, 0.0))
-    d.th("/TH/RBODY", "bodies", ["WX", "WY", "WZ", "VX", "KE"], [1, 2, 3])
+    d.history("RBODY", "bodies", ["WX", "WY", "WZ", "VX", "KE"], [1, 2, 3])
     d.write()
 
 
 def rigid_spring_impact():
     name = "rigid_spring_impact"
     a, b, c, rho = 40.0, 40.0, 40.0, 1e-5
-    d = Deck(name, [f"{name}: a 0.2 kg mass (spring Mass 0.4 kg) moving at (-5, 1, 0) mm/ms hits, through",
+    d = Case(name, [f"{name}: a 0.2 kg mass (spring Mass 0.4 kg) moving at (-5, 1, 0) mm/ms hits, through",
                     "a /PROP/TYPE4 linear spring K = 2 kN/mm attached off-centre to a corner of a free",
                     f"rigid box ({a} mm cube, brick mass {rho * a * b * c} kg; the spring's other half mass",
                     "0.2 kg sits on the corner, so M = 0.84 kg, centre (24.762, 24.762, 15.238) mm), which",
@@ -316,12 +254,11 @@ def rigid_spring_impact():
     rid, main = d.brick_rbody("box", a, b, c, rho, (20.0, 20.0, 20.0), (0.0, 0.0, 0.0))
     corner = 4  # node (40, 40, 0): fourth corner of the brick
     free = d.node(100.0, 40.0, 0.0)
-    p = d.spring_part("impact spring", "/PROP/TYPE4",
-                      [f20(0.4) + i10(0) + i10(0) + i10(0)] + d.dof_block(k=2.0))
+    p = d.spring_part("impact spring", 4, 0.4, [d.spring_dof(k=2.0)])
     d.springs(p, [(corner, free)])
-    d.inivel("projectile", (-5.0, 1.0, 0.0), [free])
-    d.th("/TH/NODE", "projectile", ["DX", "DY", "DZ", "VX", "VY", "VZ"], [(free, "projectile"), (main, "box centre")])
-    d.th("/TH/RBODY", "box", ["VX", "VY", "VZ", "AMX", "AMY", "AMZ", "KE"], [rid])
+    d.launch("projectile", (-5.0, 1.0, 0.0), [free])
+    d.history("NODE", "projectile", ["DX", "DY", "DZ", "VX", "VY", "VZ"], [(free, "projectile"), (main, "box centre")])
+    d.history("RBODY", "box", ["VX", "VY", "VZ", "AMX", "AMY", "AMZ", "KE"], [rid])
     d.write()
 
 
