@@ -279,7 +279,11 @@ def main():
     L.append("- Oblique thorax (Viano 1989): 150 mm face, 30 deg forward of lateral from the left, axis through the "
              "torso centre at the lower end of the sternum (xiphoid); channels projected on the impact axis "
              "(`ctest/validation/cases/viano1989_thorax_oblique_*_model_frame.toml`, because the model cannot be "
-             "turned onto the global Y axis).")
+             "turned onto the global Y axis). The impactor contacts the skin only: the seated model's left arm "
+             "hangs beside the chest in the impactor's path (notes above) and is passed through, so the pendulum "
+             "loads the chest wall directly as in a test with the arm clear of the path; the arm cannot be raised "
+             "without re-posturing the model (`geometry/`), and the arm position of Viano's subjects is to be "
+             "checked in SAE 892432 (see `geometry/calibration-notes-validation.md`).")
     L.append("- Lateral pelvis (Viano 1989): 150 mm face on the left greater trochanter landmark, travelling -Y "
              "(`corridors/cases/viano1989_pelvis_lateral_5p2.toml`).")
     L.append("- No material was tuned per case; calibration notes go to `geometry/calibration-notes-validation.md`.")
