@@ -107,6 +107,7 @@ bool read_solid_property(BuildContext& ctx, const Part& part, SolidGroup& g) {
                 "Isolid = " + std::to_string(isolid) + " not supported (0, 1 viscous, 2 stiffness, 24 physical)");
       return false;
   }
+  g.icpre = static_cast<int>(p->integer(0, "Icpre"));
   g.qa = p->real(1, "qa");
   g.qb = p->real(1, "qb");
   g.hourglass_coef = p->real(1, "h");

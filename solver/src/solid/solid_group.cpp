@@ -33,18 +33,21 @@ inline void tetra_volume_gradient(const double* x, const double* y, const double
 }
 
 // Physical hourglass stiffness in the corotational frame (engine-design.md §12):
-// dQ = dW/du for the deviatoric energy of the linear (modes 0-2) and bilinear (mode 3)
-// hourglass strains of a box with half-lengths a, shear modulus G, volume V.
+// dQ = dW/du for the energy of the linear (modes 0-2) and bilinear (mode 3) hourglass
+// strains of a box with half-lengths a, shear modulus G, volume V.
 // u[i][k]: component i of hourglass mode k (local frame). Adds into dQ.
+// The normal-strain pairs of modes 0-2 carry c1/2 (A^2 + B^2) + c2 A B and the normal
+// warping strain of mode 3 the factor c3 (HourglassCoefficients): deviatoric energy only
+// (Icpre 1, Belytschko & Bindeman 1993 ADS) or plane-stress bending (Icpre 0, ASQBI).
 inline void physical_hourglass(const double u[3][4], const double a[3], double G, double V,
-                               double dQ[3][4]) {
+                               double c1, double c2, double c3, double dQ[3][4]) {
   const double s = G * V / (3.0 * 64.0);
   for (int m = 0; m < 3; ++m) {
     const int p = (m + 1) % 3, r = (m + 2) % 3;
     const double A = u[p][r] / a[p], B = u[r][p] / a[r];
     const double C = u[p][p] / a[r], D = u[r][r] / a[p];
-    const double dA = s * (2.0 * A - 2.0 * (A + B) / 3.0);
-    const double dB = s * (2.0 * B - 2.0 * (A + B) / 3.0);
+    const double dA = s * (c1 * A + c2 * B);
+    const double dB = s * (c1 * B + c2 * A);
     const double dCD = s * (C + D);
     dQ[p][r] += dA / a[p];
     dQ[r][p] += dB / a[r];
@@ -55,7 +58,7 @@ inline void physical_hourglass(const double u[3][4], const double a[3], double G
   const double i0 = 1.0 / (a[0] * a[0]), i1 = 1.0 / (a[1] * a[1]), i2 = 1.0 / (a[2] * a[2]);
   const double sum = i0 + i1 + i2;
   const double inv[3] = {i0, i1, i2};
-  for (int i = 0; i < 3; ++i) dQ[i][3] += s4 * (sum + inv[i] / 3.0) * u[i][3];
+  for (int i = 0; i < 3; ++i) dQ[i][3] += s4 * (sum + (c3 - 1.0) * inv[i]) * u[i][3];
 }
 
 }  // namespace
@@ -71,6 +74,8 @@ Index SolidGroup::initialize(const NodalState& nodes) {
   e_int.assign(n, 0.0);
   if (nodes_per_element == 8)
     for (auto& a : hg) a.assign(n, 0.0);
+  if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
+    for (auto& a : hg_visc) a.assign(n, 0.0);
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
   allocate_slots(false);
@@ -93,6 +98,25 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     mass[e] = material.rho * v;
   }
   return bad;
+}
+
+SolidGroup::HourglassCoefficients SolidGroup::physical_coefficients() const {
+  HourglassCoefficients h;
+  if (icpre == 1) {
+    // Deviatoric hourglass strain energy only (reduced pressure).
+    h.c1 = 4.0 / 3.0;
+    h.c2 = -2.0 / 3.0;
+    h.c3 = 4.0 / 3.0;
+  } else {
+    // Bending modes with the plane-stress modulus E/(1 - nu^2) = 2G/(1 - nu) and coupling
+    // nu, warping mode with the uniaxial modulus E = 2G(1 + nu): bounded as nu -> 1/2
+    // (ASQBI, Belytschko & Bindeman 1993), so no volumetric locking.
+    const double nu = std::clamp(material.nu, 0.0, 0.5);
+    h.c1 = 2.0 / (1.0 - nu);
+    h.c2 = nu * h.c1;
+    h.c3 = 2.0 * (1.0 + nu);
+  }
+  return h;
 }
 
 std::string_view SolidGroup::formulation() const {
@@ -313,22 +337,43 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
         double u[3][4], dQ[3][4] = {};
         for (int i = 0; i < 3; ++i)
           for (int a = 0; a < 4; ++a) u[i][a] = (R[i][0] * qx[a] + R[i][1] * qy[a] + R[i][2] * qz[a]) * dt;
-        physical_hourglass(u, half, mat.G, V, dQ);
+        const HourglassCoefficients hc = physical_coefficients();
+        physical_hourglass(u, half, mat.G, V, hc.c1, hc.c2, hc.c3, dQ);
+        // Q is kept in the global frame and turned with the element spin W (Jaumann, like
+        // the stress): Q += dt W Q + R^T dQ. The frame R only orients the increment, so a
+        // badly distorted element whose Gram-Schmidt frame jumps cannot turn the stored
+        // hourglass force (that created energy in the hub case).
+        const double Wm[3][3] = {{0.0, wxy, -wzx}, {-wxy, 0.0, wyz}, {wzx, -wyz, 0.0}};
         double p = 0.0;
-        double Ql[3][4];
-        for (int i = 0; i < 3; ++i)
-          for (int a = 0; a < 4; ++a) {
-            const double old = hg[i * 4 + a][e];
-            Ql[i][a] = old + dQ[i][a];
-            hg[i * 4 + a][e] = Ql[i][a];
-            p += 0.5 * (old + Ql[i][a]) * u[i][a];
-          }
-        e_hg_inc += p;
+        double Qg[3][4];
         for (int a = 0; a < 4; ++a) {
-          Qx[a] = R[0][0] * Ql[0][a] + R[1][0] * Ql[1][a] + R[2][0] * Ql[2][a];
-          Qy[a] = R[0][1] * Ql[0][a] + R[1][1] * Ql[1][a] + R[2][1] * Ql[2][a];
-          Qz[a] = R[0][2] * Ql[0][a] + R[1][2] * Ql[1][a] + R[2][2] * Ql[2][a];
+          const double old[3] = {hg[a][e], hg[4 + a][e], hg[8 + a][e]};
+          const double qv[3] = {qx[a], qy[a], qz[a]};
+          for (int k = 0; k < 3; ++k) {
+            Qg[k][a] = old[k] + dt * (Wm[k][0] * old[0] + Wm[k][1] * old[1] + Wm[k][2] * old[2]) +
+                       R[0][k] * dQ[0][a] + R[1][k] * dQ[1][a] + R[2][k] * dQ[2][a];
+            hg[k * 4 + a][e] = Qg[k][a];
+            p += 0.5 * (old[k] + Qg[k][a]) * qv[k] * dt;
+          }
         }
+        // The elastic part is the strain energy of the element's assumed hourglass strain
+        // field: internal energy, as in OpenRadioss Isolid 24. Only the viscous part below
+        // (artificial dissipation) is hourglass energy.
+        e_int[e] += p;
+        e_int_inc += p;
+        // Small viscous part (global frame), trapezoidal work like the viscous form.
+        const double cv = hc.viscous * hourglass_coef * rho * c * std::cbrt(V * V) * 0.25;
+        double pv = 0.0;
+        for (int a = 0; a < 4; ++a) {
+          const double vx_ = cv * qx[a], vy_ = cv * qy[a], vz_ = cv * qz[a];
+          pv += 0.5 * ((hg_visc[a][e] + vx_) * qx[a] + (hg_visc[4 + a][e] + vy_) * qy[a] +
+                       (hg_visc[8 + a][e] + vz_) * qz[a]);
+          hg_visc[a][e] = vx_; hg_visc[4 + a][e] = vy_; hg_visc[8 + a][e] = vz_;
+          Qx[a] = Qg[0][a] + vx_;
+          Qy[a] = Qg[1][a] + vy_;
+          Qz[a] = Qg[2][a] + vz_;
+        }
+        e_hg_inc += pv * dt;
       }
       for (int i = 0; i < 8; ++i)
         for (int a = 0; a < 4; ++a) {

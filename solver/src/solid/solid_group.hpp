@@ -32,6 +32,16 @@ class SolidGroup final : public ElementGroup {
   HourglassForm hourglass = HourglassForm::Viscous;
   double hourglass_coef = 0.1;   // h of /PROP/TYPE14
   double qa = 1.1, qb = 0.05;    // bulk viscosity
+  int icpre = 0;                 // /PROP/TYPE14 Icpre (Physical form: 1 = deviatoric only)
+
+  // Physical form: energy factors of the hourglass normal strains (see physical_hourglass)
+  // and the viscous part, a fraction of the viscous form's coefficient h rho c V^(2/3)/4
+  // (OpenRadioss HEPH adds 1/150 of it: engine-design.md §12).
+  struct HourglassCoefficients {
+    double c1 = 4.0 / 3.0, c2 = -2.0 / 3.0, c3 = 4.0 / 3.0;
+    double viscous = 1.0 / 150.0;
+  };
+  HourglassCoefficients physical_coefficients() const;
 
   // Per-element state (struct of arrays).
   std::vector<double> volume0;             // [length^3]
@@ -41,6 +51,7 @@ class SolidGroup final : public ElementGroup {
   std::vector<double> eps_p;               // plastic strain (LAW2/36)
   std::vector<double> e_int;               // internal energy of the element [energy]
   std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]
+  std::array<std::vector<double>, 12> hg_visc;  // Physical: viscous part of Q (global) [force]
   std::vector<double> q_bulk;              // bulk viscosity pressure of the last cycle [stress]
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
