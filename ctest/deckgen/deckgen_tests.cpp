@@ -39,7 +39,7 @@ const Built& model() {
     Built x;
     x.g = load_geometry(kGeometry);
     x.m = build_body_model(x.g, MesherOptions{}, &x.lm);
-    assign_rigid_body_masses(x.m, x.g);
+    assign_rigid_body_masses(x.m, x.g, x.lm);
     return x;
   }();
   return b;
@@ -147,6 +147,42 @@ TEST(Model, SegmentMassesAndCentresOfGravity) {
   }
   // Whole body against the 50th male body mass (VIVA+ 50M 76.75 kg), within 10 %.
   EXPECT_NEAR(r.total, 76.75, 7.675);
+  // The reference segmentation (SegmentCuts) is a partition: every lumped mass share and
+  // every added mass lands in exactly one segment, so the segments sum to the body mass.
+  double sum = 0;
+  for (const auto& s : r.segments)
+    if (s.segment != "trunk") sum += s.mass;
+  EXPECT_NEAR(sum, r.total, 1e-9 * r.total);
+  // The trunk row is the sum of its three planes' segments.
+  double parts = 0, trunk = 0;
+  for (const auto& s : r.segments) {
+    if (s.segment == "thorax" || s.segment == "abdomen" || s.segment == "pelvis") parts += s.mass;
+    if (s.segment == "trunk") trunk = s.mass;
+  }
+  EXPECT_NEAR(parts, trunk, 1e-9 * trunk);
+}
+
+TEST(Model, ThighHoldsTheButtockBelowTheHipPlane) {
+  // Zatsiorsky's thigh includes the buttock: torso-mesh mass below the hip plane is in the
+  // femur segment, on the thigh side of the plane (pelvis axis normal, pointing up).
+  const Built& b = model();
+  SegmentCuts cuts(b.lm, b.g);
+  double below = 0;
+  for (std::size_t e = 0; e < b.m.bricks.size(); ++e) {
+    const FePart& p = b.m.parts[static_cast<std::size_t>(b.m.brick_part[e])];
+    if (p.segment != "pelvis") continue;
+    for (int n : b.m.bricks[e]) {
+      const Eigen::Vector3d& x = b.m.nodes[static_cast<std::size_t>(n)];
+      cuts.classify(p.segment, x, [&](const std::string& s, double w) {
+        if (s == "femur_r") {
+          // Mid-sagittal nodes are cut by the plane through the mid-hip point.
+          EXPECT_LT(cuts.plane(std::abs(x.y()) < 1e-6 ? "mid_hip" : "hip_r").side(x), 0.0);
+          below += w * element_mass(b.m, ElementKind::Brick, e) / 8;
+        }
+      });
+    }
+  }
+  EXPECT_GT(below, 0.0);
 }
 
 TEST(Model, DiscBricksReproduceAxialStiffness) {
@@ -199,7 +235,7 @@ TEST(Deck, SameInputGivesIdenticalTextAndTheDeckReadsBack) {
   Built b2;
   b2.g = load_geometry(kGeometry);
   b2.m = build_body_model(b2.g, MesherOptions{}, &b2.lm);
-  assign_rigid_body_masses(b2.m, b2.g);
+  assign_rigid_body_masses(b2.m, b2.g, b2.lm);
   auto text = [](const FeModel& m) {
     hbm::deck::Deck d = model_cards(m, "t");
     std::ostringstream os;

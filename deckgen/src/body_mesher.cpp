@@ -370,6 +370,9 @@ void Builder::build_torso() {
   lm_.boundary_centres["T9_lower"] = centre("T9_lower");
   lm_.boundary_centres["L3_lower"] = centre("L3_lower");
   lm_.boundary_centres["seat"] = centre("seat");
+  for (int l = 0; l < torso_->levels(); ++l) lm_.trunk_centreline.push_back(centre(torso_->level(l).name));
+  for (int l = 0; l < torso_->levels(); ++l)
+    if (torso_->level(l).name == "L3_lower") lm_.points["omphalion"] = m_.nodes[static_cast<std::size_t>(torso_->ring_node(l, 3, 0))];
 }
 
 // Young's modulus of a disc part from its axial stiffness: E = k h / A over the disc
@@ -510,6 +513,8 @@ void Builder::build_ribcage() {
         for (int n : tri) sternum_nodes_.insert(n);
       }
     }
+  lm_.points["suprasternale"] = P(torso_->ring_node(l1 + 1, 3, 0));
+  lm_.points["xiphion"] = P(torso_->ring_node(l7, 3, 0));
 }
 
 // --- pelvis --------------------------------------------------------------------------------
@@ -967,10 +972,12 @@ void Builder::build_contacts() {
   std::vector<int> clav = clavicle_nodes_[0];
   clav.insert(clav.end(), clavicle_nodes_[1].begin(), clavicle_nodes_[1].end());
   add("clavicle_ribcage", 7, clav, cage_segments_, 1.0);
-  // No clavicle-skin contact: at the acromial end the clavicle pierces the coarse shoulder
-  // skin (initial penetration, 36 % energy error at cycle 0 in the drop test); to be added
-  // back when the shoulder envelope is refined.
   add("head_thorax", 7, outside(head_env_nodes_, 2.0), torso_skin_, 2.0);
+  // No clavicle-skin contact. Restricted to the clavicle nodes inside the torso and at
+  // least two gaps from the skin (CGAL inside test and AABB distance: 94 of 108 nodes), the
+  // interface still starts the drop deck with a 33.9 % energy error at cycle 0 (0.006 %
+  // without it; the same with the skin segments reversed), so the cause is not an initial
+  // penetration by distance: left out until the engine's TYPE7 start-up is understood.
 }
 
 // --- rigid bodies ----------------------------------------------------------------------------

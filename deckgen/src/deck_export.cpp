@@ -74,6 +74,10 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       .commit();
   for (const FePart& p : m.parts) {
     if (p.kind != ElementKind::Shell && p.kind != ElementKind::Tria) continue;
+    // Ishell 4: Belytschko Q4 with hourglass modes orthogonalised for warped elements
+    // (OpenRadioss /PROP/TYPE1); skin, pelvis cortex and scapula quads warp up to 15 deg,
+    // and QEPH (24) is not in the project engine (Ishell 0-4). Ish3n 2: C0 triangle with
+    // the large-rotation correction (the OpenRadioss default).
     CardBuilder(d, "/PROP/TYPE1", shell_prop_id(p), "shell " + p.name)
         .set_int(0, "Ishell", 4)
         .set_int(0, "Ish3n", 2)
@@ -100,10 +104,10 @@ Deck model_cards(const FeModel& m, const std::string& title) {
   for (const FePart& p : m.parts) {
     CardBuilder c(d, "/PART", p.id, p.name);
     if (p.kind == ElementKind::Spring) {
-      // Spring parts carry the first material's id: Radioss ignores it for springs, the
-      // project solver requires an existing material on every part.
+      // Spring parts have no material (mat_id 0, as in Radioss: the spring property holds
+      // stiffness, damping and mass).
       c.set_int(0, "prop_id", spring_prop_id(m.spring_props[static_cast<std::size_t>(p.spring_prop)]));
-      c.set_int(0, "mat_id", m.materials.front().id);
+      c.set_int(0, "mat_id", 0);
     } else {
       c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? kSolidProp : shell_prop_id(p));
       c.set_int(0, "mat_id", m.materials[static_cast<std::size_t>(p.material)].id);

@@ -99,15 +99,21 @@ Eigen::Matrix3d point_inertia(const V3& r, double mass) {
   return mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
 }
 
-bool in_segment(const std::string& part_segment, const std::string& seg) {
-  if (seg == "trunk") return part_segment == "thorax" || part_segment == "abdomen" || part_segment == "pelvis";
-  return part_segment == seg;
+bool in_segment(const std::string& point_segment, const std::string& seg) {
+  if (seg == "trunk") return point_segment == "thorax" || point_segment == "abdomen" || point_segment == "pelvis";
+  return point_segment == seg;
 }
 
-void segment_points(const FeModel& m, const std::string& seg, std::vector<std::pair<V3, double>>& pts) {
+// Lumped nodal mass shares of segment `seg` as SegmentCuts assigns them.
+void segment_points(const FeModel& m, const SegmentCuts& cuts, const std::string& seg, std::vector<std::pair<V3, double>>& pts) {
   auto add = [&](int part, const int* nodes, int k, double mass) {
-    if (!in_segment(m.parts[static_cast<std::size_t>(part)].segment, seg)) return;
-    for (int i = 0; i < k; ++i) pts.push_back({X(m, nodes[i]), mass / k});
+    const std::string& ps = m.parts[static_cast<std::size_t>(part)].segment;
+    for (int i = 0; i < k; ++i) {
+      const V3& x = X(m, nodes[i]);
+      cuts.classify(ps, x, [&](const std::string& s, double w) {
+        if (in_segment(s, seg)) pts.push_back({x, w * mass / k});
+      });
+    }
   };
   for (std::size_t e = 0; e < m.bricks.size(); ++e) add(m.brick_part[e], m.bricks[e].data(), 8, element_mass(m, ElementKind::Brick, e));
   for (std::size_t e = 0; e < m.shells.size(); ++e) add(m.shell_part[e], m.shells[e].data(), 4, element_mass(m, ElementKind::Shell, e));
@@ -144,7 +150,56 @@ std::vector<double> element_nodal_masses(const FeModel& m) {
   return nm;
 }
 
-void assign_rigid_body_masses(FeModel& m, const GeometrySources& g) {
+SegmentCuts::SegmentCuts(const ModelLandmarks& lm, const GeometrySources& g) : centreline_(lm.trunk_centreline) {
+  if (centreline_.size() < 2) throw std::logic_error("SegmentCuts: no trunk centreline");
+  auto at = [&](const char* n) {
+    auto it = lm.points.find(n);
+    if (it == lm.points.end()) throw std::logic_error(std::string("SegmentCuts: landmark ") + n + " missing");
+    return it->second;
+  };
+  auto centre = [&](const std::string& v) {  // vertebral body centre (x, 0, z)
+    const auto& s = g.vertebra(v);
+    Eigen::Vector2d c = 0.5 * (s.upper + s.lower);
+    return V3(c.x(), 0, c.y());
+  };
+  // Trunk long axis: the torso centreline from the seat level to the top (T1).
+  const V3 trunk = (centreline_.back() - centreline_.front()).normalized();
+  const V3 lumbar = (centre("L3") - centre("L4")).normalized();
+  const V3 pelvis = (0.5 * (g.pelvis.at("asis_r") + g.pelvis.at("asis_l")) - g.pelvis.at("pubic_symphysis")).normalized();
+  // Suprasternale between the sternoclavicular joints (VIVA+ seated reference points; the
+  // jugular notch lies between them); xiphion at the lower end of the mesh sternum, where the
+  // 7th costal cartilage joins it as at the xiphisternal junction; omphalion on the front
+  // skin at the L3-L4 level (umbilicus, Gray's Anatomy surface anatomy).
+  const V3 sc = 0.5 * (g.skeleton.link("clavicle_r").joint_origin + g.skeleton.link("clavicle_l").joint_origin);
+  planes_["suprasternale"] = {sc, trunk};
+  planes_["xiphion"] = {at("xiphion"), trunk};
+  planes_["omphalion"] = {at("omphalion"), lumbar};
+  const V3 hr = g.skeleton.link("femur_r").joint_origin, hl = g.skeleton.link("femur_l").joint_origin;
+  planes_["hip_r"] = {hr, pelvis};
+  planes_["hip_l"] = {hl, pelvis};
+  planes_["mid_hip"] = {0.5 * (hr + hl), pelvis};
+}
+
+const SegmentCuts::Plane& SegmentCuts::plane(const std::string& name) const {
+  auto it = planes_.find(name);
+  if (it == planes_.end()) throw std::logic_error("SegmentCuts: no plane " + name);
+  return it->second;
+}
+
+V3 SegmentCuts::axis_point(const std::string& name) const {
+  const Plane& pl = plane(name);
+  // de Leva's lower trunk ends at the hip joint centres themselves (a joint, not a surface
+  // landmark): the mid-hip point is on the segment axis.
+  if (name == "mid_hip") return pl.point;
+  for (std::size_t i = 0; i + 1 < centreline_.size(); ++i) {
+    double s0 = pl.side(centreline_[i]), s1 = pl.side(centreline_[i + 1]);
+    if (s0 <= 0 && s1 >= 0 && s1 > s0) return centreline_[i] + (-s0 / (s1 - s0)) * (centreline_[i + 1] - centreline_[i]);
+  }
+  throw std::logic_error("SegmentCuts: the trunk centreline does not cross the " + name + " plane");
+}
+
+void assign_rigid_body_masses(FeModel& m, const GeometrySources& g, const ModelLandmarks& lm) {
+  SegmentCuts cuts(lm, g);
   for (auto& rb : m.rigid_bodies) {
     rb.added_mass = 0;
     rb.added_inertia.setZero();
@@ -153,22 +208,28 @@ void assign_rigid_body_masses(FeModel& m, const GeometrySources& g) {
       if (s.name == rb.name && s.cog_mode == "link") t = &s;
     if (!t) continue;
     const SkeletonLink& l = g.skeleton.link(rb.name);
-    V3 cog = X(m, rb.main_node);  // main node sits at the (posture-moved) link CoG
+    const V3 cog = g.skeleton.motion(rb.name) * l.cog;  // target CoG in the posture
     Eigen::Matrix3d R = g.skeleton.motion(rb.name).linear();
     Eigen::Matrix3d I_target = R * l.inertia * R.transpose();
     std::vector<std::pair<V3, double>> pts;
-    segment_points(m, rb.name, pts);
+    segment_points(m, cuts, rb.name, pts);
     double me = 0;
-    Eigen::Matrix3d Ie = Eigen::Matrix3d::Zero();
+    V3 fe = V3::Zero();
     for (const auto& [p, w] : pts) {
       me += w;
-      Ie += point_inertia(p - cog, w);
+      fe += w * p;
     }
     if (me >= t->mass)
       throw std::runtime_error("segment " + rb.name + ": envelope elements weigh " + std::to_string(me) + " kg, more than the target " +
                                std::to_string(t->mass) + " kg (" + g.dir.string() + "/segment_targets.csv:" + std::to_string(t->line) + ")");
     rb.added_mass = t->mass - me;
-    Eigen::Matrix3d Ia = I_target - Ie;
+    // The added mass sits at the main node: placed where the segment's CoG (elements, the
+    // thigh's buttock tissue included, plus added mass) equals the target CoG.
+    V3 at = (t->mass * cog - fe) / rb.added_mass;
+    m.nodes[static_cast<std::size_t>(rb.main_node)] = at;
+    Eigen::Matrix3d Ie = point_inertia(at - cog, rb.added_mass);
+    for (const auto& [p, w] : pts) Ie += point_inertia(p - cog, w);
+    Eigen::Matrix3d Ia = I_target - Ie;  // still needed about the target CoG = about the main node's own axes
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Ia);
     Eigen::Vector3d ev = es.eigenvalues();
     double floor = 0.05 * I_target.trace() / 3;
@@ -344,18 +405,19 @@ std::vector<QualityRow> quality_check(const FeModel& m, const QualityLimits& lim
 
 MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLandmarks& lm) {
   MassReport rep;
+  SegmentCuts cuts(lm, g);
   std::vector<double> nm = element_nodal_masses(m);
   for (double x : nm) rep.total += x;
   for (const auto& b : m.rigid_bodies) rep.total += b.added_mass;
   for (const auto& t : g.targets) {
-    if (t.name != "thorax" && t.name != "abdomen" && t.name != "pelvis") rep.total_target += t.mass;
+    if (t.name != "trunk") rep.total_target += t.mass;
     MassRow row;
     row.segment = t.name;
     row.target_mass = t.mass;
     row.check_cog = t.check_cog;
     row.check_mass = t.check_mass;
     std::vector<std::pair<V3, double>> pts;
-    segment_points(m, t.name, pts);
+    segment_points(m, cuts, t.name, pts);
     std::vector<std::pair<V3, std::pair<double, Eigen::Matrix3d>>> added;
     for (const auto& b : m.rigid_bodies)
       if (in_segment(b.segment, t.name) && b.added_mass > 0) added.push_back({X(m, b.main_node), {b.added_mass, b.added_inertia}});
@@ -377,13 +439,20 @@ MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLan
       row.target_principal = et.eigenvalues();
       row.has_target_inertia = true;
     } else if (t.cog_mode == "axis") {
-      std::string top, bottom;
-      if (t.name == "thorax") { top = "T1_upper"; bottom = "T9_lower"; }
-      else if (t.name == "abdomen") { top = "T9_lower"; bottom = "L3_lower"; }
-      else if (t.name == "pelvis") { top = "L3_lower"; bottom = "seat"; }
-      else if (t.name == "neck") { top = "C0"; bottom = "T1_upper"; }
-      else throw std::runtime_error("segment_targets.csv:" + std::to_string(t.line) + ": axis CoG defined only for thorax, abdomen, pelvis, neck");
-      V3 a = lm.boundary_centres.at(top), b = lm.boundary_centres.at(bottom);
+      // On the trunk centreline between the segment's landmark planes, at the longitudinal
+      // CoM fraction of de Leva 1996 (Table 4, from the proximal landmark); the neck on the
+      // line between the C0 and T1 boundary centres.
+      V3 a, b;
+      if (t.name == "neck") { a = lm.boundary_centres.at("C0"); b = lm.boundary_centres.at("T1_upper"); }
+      else {
+        std::string top, bottom;
+        if (t.name == "thorax") { top = "suprasternale"; bottom = "xiphion"; }
+        else if (t.name == "abdomen") { top = "xiphion"; bottom = "omphalion"; }
+        else if (t.name == "pelvis") { top = "omphalion"; bottom = "mid_hip"; }
+        else throw std::runtime_error("segment_targets.csv:" + std::to_string(t.line) + ": axis CoG defined only for thorax, abdomen, pelvis, neck");
+        a = cuts.axis_point(top);
+        b = cuts.axis_point(bottom);
+      }
       row.target_cog = a + t.axis_fraction * (b - a);
     }
     rep.segments.push_back(row);
@@ -474,7 +543,7 @@ bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double c
     if (s.has_target_inertia) pi << " (" << s.target_principal(0) << " " << s.target_principal(1) << " " << s.target_principal(2) << ")";
     os << "  " << std::left << std::setw(11) << s.segment << std::right << std::fixed << std::setprecision(3) << std::setw(9) << s.mass
        << std::setw(9) << s.target_mass << std::setprecision(1) << std::setw(8) << s.mass_error() * 100 << std::setw(24) << cog.str()
-       << std::setw(8) << s.cog_error() << std::setw(30) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
+       << std::setw(8) << s.cog_error() << "  " << std::setw(28) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
        << (s.check_mass ? "" : " (mass reported)") << (s.check_cog ? "" : " (CoG not checked)") << "\n";
   }
   os << std::setprecision(3) << "  total mass " << r.total << " kg (segment targets sum " << r.total_target << " kg): "

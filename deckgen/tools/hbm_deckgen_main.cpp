@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     dg::MesherOptions o;
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
-    dg::assign_rigid_body_masses(m, g);
+    dg::assign_rigid_body_masses(m, g, lm);
     m.notes.push_back("hbm-deckgen: 50th percentile male driver model from geometry sources " + g.dir.filename().string() + "/ (units kg mm ms)");
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";

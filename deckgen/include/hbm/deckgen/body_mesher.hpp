@@ -27,6 +27,12 @@ struct MesherOptions {
 // Landmarks of the built model used by the checks (region boundaries for the trunk CoG).
 struct ModelLandmarks {
   std::map<std::string, Eigen::Vector3d> boundary_centres;  // "T1_upper", "T12_lower", "L5_lower", "seat", "C0"
+  // Surface landmarks of the Zatsiorsky / de Leva trunk segmentation located on the mesh
+  // (front midline skin nodes): "suprasternale" (top of the sternum), "xiphion" (bottom of
+  // the sternum), "omphalion" (L3-L4 level).
+  std::map<std::string, Eigen::Vector3d> points;
+  // Centres of the torso skin rings, one per torso level from the seat upwards.
+  std::vector<Eigen::Vector3d> trunk_centreline;
   std::map<std::string, std::string> region_of_segment;
   std::vector<int> skin_outer_faces_first;  // unused placeholder for exports
 };

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -22,10 +23,60 @@ std::vector<double> element_nodal_masses(const FeModel& m);
 // Mass of each element (kg), in the order bricks, shells, trias.
 double element_mass(const FeModel& m, ElementKind kind, std::size_t e);
 
-// Sets each rigid body's added mass and inertia so that its segment matches the target
-// (mass and inertia about the target CoG); moves nothing. Rigid bodies without a target
-// get none. Throws if a segment's elements already weigh more than its target.
-void assign_rigid_body_masses(FeModel& m, const GeometrySources& g);
+// The reference segmentation of the model's mass (Zatsiorsky 2002 / de Leva 1996): torso
+// mesh mass is split by the planes of the gamma-scanner segmentation, each through its
+// landmark and normal to the body's long axis there (the planes are transverse in the
+// standing posture and turn with the body part when it sits): suprasternale and xiphion
+// normal to the trunk axis, omphalion normal to the lumbar spine at L3-L4, the hip joint
+// centres normal to the pelvis axis (pubic symphysis to mid-ASIS, vertical when standing).
+// Tissue on the distal side of a hip plane, the buttock, belongs to that thigh as in the
+// gamma-scanner data; every other part keeps its own segment. The mass is taken as the
+// solver lumps it (each element's mass in equal shares at its nodes) and each nodal share
+// goes to the side of the plane its node lies on: the cut is then exact for the lumped-mass
+// model the solver integrates, to half an element of resolution, where assigning whole
+// elements by centroid would move a layer's mass across a plane.
+class SegmentCuts {
+ public:
+  struct Plane {
+    Eigen::Vector3d point, normal;  // normal points to the proximal (head) side
+    double side(const Eigen::Vector3d& x) const { return (x - point).dot(normal); }
+  };
+  SegmentCuts(const ModelLandmarks& lm, const GeometrySources& g);
+  // Calls add(segment, weight) for the segment(s) a nodal mass share at x of a part of
+  // segment `part_segment` belongs to (weights sum to 1; points on the mid-sagittal plane
+  // below the hips go half to each thigh).
+  template <class F>
+  void classify(const std::string& part_segment, const Eigen::Vector3d& x, F&& add) const;
+  // Point where the trunk centreline (skin ring centres) crosses a cut plane.
+  Eigen::Vector3d axis_point(const std::string& plane) const;
+  const Plane& plane(const std::string& name) const;  // suprasternale, xiphion, omphalion, hip_r, hip_l, mid_hip
+
+ private:
+  std::vector<Eigen::Vector3d> centreline_;
+  std::map<std::string, Plane> planes_;
+};
+
+template <class F>
+void SegmentCuts::classify(const std::string& part_segment, const Eigen::Vector3d& x, F&& add) const {
+  if (part_segment != "thorax" && part_segment != "abdomen" && part_segment != "pelvis") {
+    add(part_segment, 1.0);
+    return;
+  }
+  if (std::abs(x.y()) < 1e-6 && plane("mid_hip").side(x) < 0) {
+    add("femur_r", 0.5);
+    add("femur_l", 0.5);
+  } else if (x.y() < 0 && plane("hip_r").side(x) < 0) add("femur_r", 1.0);
+  else if (x.y() > 0 && plane("hip_l").side(x) < 0) add("femur_l", 1.0);
+  else if (plane("omphalion").side(x) < 0) add("pelvis", 1.0);
+  else if (plane("xiphion").side(x) < 0) add("abdomen", 1.0);
+  else add("thorax", 1.0);
+}
+
+// Sets each rigid body's added mass, inertia and main node position so that its segment
+// (cut as SegmentCuts does: a thigh includes its buttock tissue) matches the target mass,
+// CoG and inertia. Rigid bodies without a target get none. Throws if a segment's elements
+// already weigh more than its target.
+void assign_rigid_body_masses(FeModel& m, const GeometrySources& g, const ModelLandmarks& lm);
 
 struct BudgetRow {
   std::string region, kind;
