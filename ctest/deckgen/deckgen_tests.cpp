@@ -142,7 +142,7 @@ TEST(Model, SegmentMassesAndCentresOfGravity) {
       EXPECT_LE(std::abs(s.mass_error()), 0.10) << s.segment;
     }
     if (s.check_cog) {
-      EXPECT_LE(s.cog_error(), 15.0) << s.segment;
+      EXPECT_LE(std::abs(s.cog_error()), 15.0) << s.segment;
     }
   }
   // Whole body against the 50th male body mass (VIVA+ 50M 76.75 kg), within 10 %.

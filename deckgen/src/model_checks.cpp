@@ -454,6 +454,8 @@ MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLan
         b = cuts.axis_point(bottom);
       }
       row.target_cog = a + t.axis_fraction * (b - a);
+      row.axis = (b - a).normalized();
+      row.axis_length = (b - a).norm();
     }
     rep.segments.push_back(row);
   }
@@ -531,11 +533,14 @@ bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double c
   os << "Mass properties per segment (mesh vs reference; mass within " << mass_tol * 100 << " %, CoG within " << cog_tol_mm
      << " mm where checked)\n";
   os << "  " << std::left << std::setw(11) << "segment" << std::right << std::setw(9) << "mass" << std::setw(9) << "target" << std::setw(8)
-     << "err%" << std::setw(24) << "CoG [mm]" << std::setw(8) << "dCoG" << std::setw(30) << "principal I [kg mm2]" << "  status\n";
+     << "err%" << std::setw(24) << "CoG [mm]" << std::setw(8) << "dCoG" << std::setw(8) << "across" << std::setw(7) << "L" << std::setw(30) << "principal I [kg mm2]"
+     << "  status\n";
+  os << "  (dCoG: along the segment axis, + distal, for de Leva axis rows; distance for link rows. across: AP/lateral offset"
+     << " from the axis, information: the reference does not fix it; L: landmark distance the fraction spans)\n";
   bool ok = true;
   for (const auto& s : r.segments) {
     bool mok = !s.check_mass || std::abs(s.mass_error()) <= mass_tol;
-    bool cok = !s.check_cog || s.cog_error() <= cog_tol_mm;
+    bool cok = !s.check_cog || std::abs(s.cog_error()) <= cog_tol_mm;
     ok = ok && mok && cok;
     std::ostringstream cog, pi;
     cog << std::fixed << std::setprecision(1) << s.cog.x() << " " << s.cog.y() << " " << s.cog.z();
@@ -543,7 +548,7 @@ bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double c
     if (s.has_target_inertia) pi << " (" << s.target_principal(0) << " " << s.target_principal(1) << " " << s.target_principal(2) << ")";
     os << "  " << std::left << std::setw(11) << s.segment << std::right << std::fixed << std::setprecision(3) << std::setw(9) << s.mass
        << std::setw(9) << s.target_mass << std::setprecision(1) << std::setw(8) << s.mass_error() * 100 << std::setw(24) << cog.str()
-       << std::setw(8) << s.cog_error() << "  " << std::setw(28) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
+       << std::setw(8) << s.cog_error() << std::setw(8) << s.cog_offset_across() << std::setprecision(0) << std::setw(7) << s.axis_length << "  " << std::setw(28) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
        << (s.check_mass ? "" : " (mass reported)") << (s.check_cog ? "" : " (CoG not checked)") << "\n";
   }
   os << std::setprecision(3) << "  total mass " << r.total << " kg (segment targets sum " << r.total_target << " kg): "

@@ -126,10 +126,20 @@ struct MassRow {
   std::string segment;
   double mass = 0, target_mass = 0;
   Eigen::Vector3d cog = Eigen::Vector3d::Zero(), target_cog = Eigen::Vector3d::Zero();
+  // Unit segment axis (proximal to distal landmark) for axis targets, zero for link targets.
+  // de Leva / Zatsiorsky give a trunk segment's CoM only as a fraction of the distance
+  // between its landmarks (standing subjects): the reference fixes the CoG along the axis,
+  // not its antero-posterior or lateral place.
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+  double axis_length = 0;  // mm, distance between the landmark points the fraction spans
   Eigen::Vector3d principal = Eigen::Vector3d::Zero(), target_principal = Eigen::Vector3d::Zero();
   bool check_mass = true, check_cog = false, has_target_inertia = false;
   double mass_error() const { return (mass - target_mass) / target_mass; }
-  double cog_error() const { return (cog - target_cog).norm(); }
+  // The CoG error the reference fixes: along the segment axis for axis targets (signed,
+  // positive distal), the full distance for link targets.
+  double cog_error() const { return axis.isZero() ? (cog - target_cog).norm() : (cog - target_cog).dot(axis); }
+  // Distance of the CoG from the segment axis (information only for axis targets).
+  double cog_offset_across() const { return axis.isZero() ? 0.0 : ((cog - target_cog) - (cog - target_cog).dot(axis) * axis).norm(); }
 };
 struct MassReport {
   double total = 0, total_target = 0;
