@@ -193,7 +193,7 @@ rows = [
     # and causes).
     ('thorax', BODY * ZPCT['upper_trunk'] / 100, 'axis', '0.2999', 1, 0, 'de Leva 1996 upper trunk (suprasternale-xiphion)'),
     ('abdomen', BODY * ZPCT['middle_trunk'] / 100, 'axis', '0.4502', 0, 0, 'de Leva 1996 middle trunk (xiphion-omphalion)'),
-    ('pelvis', BODY * ZPCT['lower_trunk'] / 100, 'axis', '0.6115', 0, 0, 'de Leva 1996 lower trunk (omphalion-hip joint centres)'),
+    ('pelvis', BODY * ZPCT['lower_trunk'] / 100, 'axis', '0.6115', 1, 1, 'de Leva 1996 lower trunk (omphalion-hip joint centres)'),
     ('trunk', BODY * (ZPCT['upper_trunk'] + ZPCT['middle_trunk'] + ZPCT['lower_trunk']) / 100, 'none', '', 1, 0,
      'de Leva 1996 upper + middle + lower trunk'),
 ]
