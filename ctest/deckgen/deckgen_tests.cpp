@@ -135,6 +135,31 @@ TEST(Model, StableAtOnePointFiveMicrosecondsWithLittleAddedMass) {
   EXPECT_LE(r.added_ratio(), 0.005);
 }
 
+// de Leva 1996 gives a trunk segment's CoM only as a fraction of its landmark distance
+// (standing subjects): the held error is the CoG's offset along the segment axis, and the
+// upper-trunk target is 29.99 % of the suprasternale-xiphion distance below suprasternale
+// (Table 4; 50.66 % belongs to the cervicale-xiphion definition).
+TEST(Model, TrunkCentresOfGravityAreComparedAlongTheSegmentAxis) {
+  MassReport r = mass_check(model().m, model().g, model().lm);
+  SegmentCuts cuts(model().lm, model().g);
+  int seen = 0;
+  for (const auto& s : r.segments) {
+    if (s.segment != "thorax" && s.segment != "abdomen" && s.segment != "pelvis") continue;
+    ++seen;
+    EXPECT_NEAR(s.axis.norm(), 1.0, 1e-12) << s.segment;
+    const double full = (s.cog - s.target_cog).norm();
+    EXPECT_NEAR(s.cog_error() * s.cog_error() + s.cog_offset_across() * s.cog_offset_across(), full * full, 1e-6 * (1 + full * full))
+        << s.segment;
+    const char* top = s.segment == "thorax" ? "suprasternale" : s.segment == "abdomen" ? "xiphion" : "omphalion";
+    const Eigen::Vector3d a = cuts.axis_point(top);
+    EXPECT_GT(s.axis.dot(s.target_cog - a), 0) << s.segment << ": axis points from the proximal landmark";
+    if (s.segment == "thorax") {
+      EXPECT_NEAR((s.target_cog - a).norm(), 0.2999 * s.axis_length, 1e-9);
+    }
+  }
+  EXPECT_EQ(seen, 3);
+}
+
 TEST(Model, SegmentMassesAndCentresOfGravity) {
   MassReport r = mass_check(model().m, model().g, model().lm);
   for (const auto& s : r.segments) {
