@@ -456,6 +456,8 @@ MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLan
       row.target_cog = a + t.axis_fraction * (b - a);
       row.axis = (b - a).normalized();
       row.axis_length = (b - a).norm();
+    } else {
+      row.has_target_cog = false;
     }
     rep.segments.push_back(row);
   }
@@ -527,6 +529,12 @@ bool print_quality(std::ostream& os, const std::vector<QualityRow>& rows, const 
   return ok;
 }
 
+static std::string fmt1(double v) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(1) << v;
+  return o.str();
+}
+
 bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double cog_tol_mm) {
   os.unsetf(std::ios::floatfield);
   os << std::setprecision(6);
@@ -540,7 +548,7 @@ bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double c
   bool ok = true;
   for (const auto& s : r.segments) {
     bool mok = !s.check_mass || std::abs(s.mass_error()) <= mass_tol;
-    bool cok = !s.check_cog || std::abs(s.cog_error()) <= cog_tol_mm;
+    bool cok = !s.check_cog || (s.has_target_cog && std::abs(s.cog_error()) <= cog_tol_mm);
     ok = ok && mok && cok;
     std::ostringstream cog, pi;
     cog << std::fixed << std::setprecision(1) << s.cog.x() << " " << s.cog.y() << " " << s.cog.z();
@@ -548,7 +556,7 @@ bool print_mass(std::ostream& os, const MassReport& r, double mass_tol, double c
     if (s.has_target_inertia) pi << " (" << s.target_principal(0) << " " << s.target_principal(1) << " " << s.target_principal(2) << ")";
     os << "  " << std::left << std::setw(11) << s.segment << std::right << std::fixed << std::setprecision(3) << std::setw(9) << s.mass
        << std::setw(9) << s.target_mass << std::setprecision(1) << std::setw(8) << s.mass_error() * 100 << std::setw(24) << cog.str()
-       << std::setw(8) << s.cog_error() << std::setw(8) << s.cog_offset_across() << std::setprecision(0) << std::setw(7) << s.axis_length << "  " << std::setw(28) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
+       << std::setw(8) << (s.has_target_cog ? fmt1(s.cog_error()) : "-") << std::setw(8) << (s.has_target_cog ? fmt1(s.cog_offset_across()) : "-") << std::setprecision(0) << std::setw(7) << s.axis_length << "  " << std::setw(28) << pi.str() << "  " << (mok && cok ? "OK" : "FAIL")
        << (s.check_mass ? "" : " (mass reported)") << (s.check_cog ? "" : " (CoG not checked)") << "\n";
   }
   os << std::setprecision(3) << "  total mass " << r.total << " kg (segment targets sum " << r.total_target << " kg): "

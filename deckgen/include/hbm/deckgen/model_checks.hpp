@@ -134,6 +134,7 @@ struct MassRow {
   double axis_length = 0;  // mm, distance between the landmark points the fraction spans
   Eigen::Vector3d principal = Eigen::Vector3d::Zero(), target_principal = Eigen::Vector3d::Zero();
   bool check_mass = true, check_cog = false, has_target_inertia = false;
+  bool has_target_cog = true;  // false for rows without a CoG reference (cog_mode none)
   double mass_error() const { return (mass - target_mass) / target_mass; }
   // The CoG error the reference fixes: along the segment axis for axis targets (signed,
   // positive distal), the full distance for link targets.
