@@ -2,6 +2,7 @@
 // Diagnostics: each planted error is reported once, at its file:line:col, with the
 // message format `file:line:col: error: /MAT/LAW1/17 field E = -1: must be > 0`; the
 // --check command returns 1 for deck errors, 2 for bad command-line use, creates no file.
+#include "deck_test_support.hpp"
 #include "hbm/deck/check_command.hpp"
 #include "hbm/deck/io.hpp"
 #include "hbm/deck/summary.hpp"
@@ -15,10 +16,11 @@
 #include <sstream>
 
 using namespace hbm::deck;
+using hbm::deck::testing::kDir;
+using hbm::deck::testing::messages;
 
 namespace {
 
-const std::filesystem::path kDir = HBM_DECK_TEST_DIR;
 const std::filesystem::path kPlanted = HBM_DECK_PLANTED;
 
 struct Expect {
@@ -26,12 +28,6 @@ struct Expect {
   int col;
   std::string text;  // exact message
 };
-
-std::string dump(const ReadResult& r) {
-  std::ostringstream os;
-  print_diagnostics(os, r);
-  return os.str();
-}
 
 // A minimal valid starter deck around `body` (cards between /BEGIN and /END).
 std::string starter(const std::string& body) {
@@ -81,7 +77,7 @@ TEST(DeckDiagnostics, PlantedErrorsEachReportedAtTheirLine) {
       {48, 1, "missing /END: the starter deck must end with /END"},
       {48, 21, "/BCS/1 field grnod_id = 7: node group 7 is not defined"},
   };
-  ASSERT_EQ(r.diagnostics.size(), expected.size()) << dump(r);
+  ASSERT_EQ(r.diagnostics.size(), expected.size()) << messages(r);
   for (std::size_t i = 0; i < expected.size(); ++i) {
     const Diagnostic& d = r.diagnostics[i];
     EXPECT_EQ(d.severity, Severity::Error);
@@ -119,7 +115,7 @@ TEST(DeckDiagnostics, ModelSummaryOfTheSmallDeck) {
   // Analytic values: 10 mm steel cube rho 7.8e-6 kg/mm^3 -> 7.8e-3 kg; dt = L/c with
   // L = V/Amax = 10 mm, c = sqrt(E(1-nu)/((1+nu)(1-2nu)rho)) = 6020.18 mm/ms.
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << dump(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const ModelSummary s = summarize(r.deck);
   EXPECT_EQ(s.nodes, 11u);
   EXPECT_EQ(s.elements.at("/BRICK"), 1u);
@@ -156,7 +152,7 @@ TEST(DeckDiagnostics, IncludeChainAndCycle) {
   }
   const ReadResult r = read_deck(dir / "main_0000.rad", Section::Starter);
   const auto errs = errors_of(r);
-  ASSERT_EQ(errs.size(), 1u) << dump(r);
+  ASSERT_EQ(errs.size(), 1u) << messages(r);
   EXPECT_EQ(errs[0], (dir / "sub" / "b.inc").string() + ":4:18: error: /MAT/LAW1/3 field E = -5: must be > 0\n" +
                          "  included from " + (dir / "sub" / "a.inc").string() + ":2\n" + "  included from " +
                          (dir / "main_0000.rad").string() + ":6");
@@ -165,13 +161,13 @@ TEST(DeckDiagnostics, IncludeChainAndCycle) {
   }
   const ReadResult c = read_deck(dir / "main_0000.rad", Section::Starter);
   const auto cerrs = errors_of(c);
-  ASSERT_EQ(cerrs.size(), 1u) << dump(c);
+  ASSERT_EQ(cerrs.size(), 1u) << messages(c);
   EXPECT_NE(cerrs[0].find("b.inc:1:10: error: #include cycle: "), std::string::npos) << cerrs[0];
   {
     std::ofstream(dir / "sub" / "a.inc") << "#include missing.inc\n";
   }
   const ReadResult m = read_deck(dir / "main_0000.rad", Section::Starter);
-  ASSERT_EQ(errors_of(m).size(), 1u) << dump(m);
+  ASSERT_EQ(errors_of(m).size(), 1u) << messages(m);
   EXPECT_NE(errors_of(m)[0].find("a.inc:1:10: error: cannot read included file"), std::string::npos);
 }
 
@@ -183,7 +179,7 @@ TEST(DeckDiagnostics, NumberForms) {
     char line[128];
     std::snprintf(line, sizeof line, "%10d%20s%20s%20s\n", 1, ok.text, "0", "0");
     const ReadResult r = read_deck_text(starter(std::string("/NODE\n") + line), "n.rad", Section::Starter);
-    ASSERT_TRUE(r.ok()) << ok.text << "\n" << dump(r);
+    ASSERT_TRUE(r.ok()) << ok.text << "\n" << messages(r);
     EXPECT_EQ(r.deck.cards_of("/NODE")[0]->real(r.deck.cards_of("/NODE")[0]->row(0), "X"), ok.value) << ok.text;
   }
   struct Bad { const char* text; const char* message; };
@@ -196,7 +192,7 @@ TEST(DeckDiagnostics, NumberForms) {
     char line[128];
     std::snprintf(line, sizeof line, "%10d%20s%20s%20s\n", 1, bad.text, "0", "0");
     const ReadResult r = read_deck_text(starter(std::string("/NODE\n") + line), "n.rad", Section::Starter);
-    ASSERT_EQ(r.diagnostics.size(), 1u) << bad.text << "\n" << dump(r);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << bad.text << "\n" << messages(r);
     EXPECT_EQ(r.diagnostics[0].message, bad.message);
     EXPECT_EQ(r.diagnostics[0].loc.line, 7u);
     EXPECT_EQ(r.diagnostics[0].column, 31 - static_cast<int>(std::strlen(bad.text)));
@@ -204,7 +200,7 @@ TEST(DeckDiagnostics, NumberForms) {
   // An integer field with a real in it.
   const ReadResult r = read_deck_text(starter("/NODE\n       1.5                  0.                  0.                  0.\n"),
                                       "n.rad", Section::Starter);
-  ASSERT_EQ(r.diagnostics.size(), 1u) << dump(r);
+  ASSERT_EQ(r.diagnostics.size(), 1u) << messages(r);
   EXPECT_EQ(r.diagnostics[0].message, "/NODE field id = '1.5': integer expected");
   EXPECT_EQ(r.diagnostics[0].column, 8);
 }
@@ -292,14 +288,14 @@ TEST(DeckDiagnostics, BeginUnits) {
   const std::string ok = "/BEGIN\nu\n      2024\n                  Mg                  mm                 mus\n"
                          "                  kg                   m                   s\n/END\n";
   const ReadResult a = read_deck_text(ok, "u.rad", Section::Starter);
-  ASSERT_TRUE(a.ok()) << dump(a);
+  ASSERT_TRUE(a.ok()) << messages(a);
   EXPECT_EQ(a.deck.input_units.mass, "Mg");
   EXPECT_EQ(a.deck.input_units.time, "mus");
   EXPECT_EQ(a.deck.work_units.length, "m");
   const std::string bad = "/BEGIN\nu\n      2024\n                  lb                  mm                  ms\n"
                           "                  kg                  mm                  ms\n/END\n";
   const ReadResult b = read_deck_text(bad, "u.rad", Section::Starter);
-  ASSERT_EQ(b.diagnostics.size(), 1u) << dump(b);
+  ASSERT_EQ(b.diagnostics.size(), 1u) << messages(b);
   EXPECT_EQ(format(b.diagnostics[0], b.deck),
             "u.rad:4:1: error: /BEGIN field mass = 'lb': unknown unit (an SI prefix and g, e.g. kg, g, Mg)");
 }

@@ -6,6 +6,7 @@
 // mutation happened to leave a valid deck, with a clean read that also round-trips
 // through the writer. No exception, no crash, no hang (each run is timed), and, in the
 // sanitizer build, no ASan/UBSan report (the test runs under -fno-sanitize-recover).
+#include "deck_test_support.hpp"
 #include "hbm/deck/check_command.hpp"
 #include "hbm/deck/io.hpp"
 
@@ -19,17 +20,10 @@
 #include <sstream>
 
 using namespace hbm::deck;
+using hbm::deck::testing::kDir;
+using hbm::deck::testing::slurp;
 
 namespace {
-
-const std::filesystem::path kDir = HBM_DECK_TEST_DIR;
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::string> split_lines(const std::string& t) {
   std::vector<std::string> out;

@@ -2,6 +2,7 @@
 // Reader tests on the small valid decks in ctest/deck/decks: every value asserted here is
 // the one typed in the deck file (including Fortran and Radioss exponent forms and a
 // node from an #include'd file).
+#include "deck_test_support.hpp"
 #include "hbm/deck/io.hpp"
 
 #include <gtest/gtest.h>
@@ -9,16 +10,10 @@
 #include <sstream>
 
 using namespace hbm::deck;
+using hbm::deck::testing::kDir;
+using hbm::deck::testing::messages;
 
 namespace {
-
-const std::filesystem::path kDir = HBM_DECK_TEST_DIR;
-
-std::string all_messages(const ReadResult& r) {
-  std::ostringstream os;
-  print_diagnostics(os, r);
-  return os.str();
-}
 
 const Row* node_row(const Deck& d, std::int64_t id) {
   for (const Card* c : d.cards_of("/NODE"))
@@ -31,8 +26,8 @@ const Row* node_row(const Deck& d, std::int64_t id) {
 
 TEST(DeckReader, SmallStarterReadsCleanly) {
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
-  EXPECT_EQ(r.diagnostics.size(), 0u) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
+  EXPECT_EQ(r.diagnostics.size(), 0u) << messages(r);
   EXPECT_EQ(r.deck.run_name, "small");
   EXPECT_EQ(r.deck.invers, 2024);
   EXPECT_EQ(r.deck.work_units.mass, "kg");
@@ -44,7 +39,7 @@ TEST(DeckReader, SmallStarterReadsCleanly) {
 
 TEST(DeckReader, NodeCoordinatesIncludingExponentFormsAndIncludes) {
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const auto nodes = r.deck.cards_of("/NODE");
   ASSERT_EQ(nodes.size(), 1u);
   EXPECT_EQ(nodes[0]->n_rows(), 11u);  // 10 in the deck + 1 from the include
@@ -66,7 +61,7 @@ TEST(DeckReader, NodeCoordinatesIncludingExponentFormsAndIncludes) {
 
 TEST(DeckReader, ElementsPartsPropertiesMaterials) {
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const auto bricks = r.deck.cards_of("/BRICK");
   ASSERT_EQ(bricks.size(), 1u);
   EXPECT_EQ(bricks[0]->id, 1);  // part id
@@ -109,7 +104,7 @@ TEST(DeckReader, ElementsPartsPropertiesMaterials) {
 
 TEST(DeckReader, LoadsGroupsFunctionsTimeHistory) {
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const Deck& d = r.deck;
   const Card& bcs = *d.cards_of("/BCS")[0];
   EXPECT_EQ(d.text(bcs, bcs.lines[0], "Tra"), "111");
@@ -142,7 +137,7 @@ TEST(DeckReader, LoadsGroupsFunctionsTimeHistory) {
 
 TEST(DeckReader, EngineDeckFreeFormat) {
   const ReadResult r = read_deck(kDir / "small_0001.rad", Section::Engine);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const Deck& d = r.deck;
   EXPECT_EQ(d.run_name, "small");
   const Card& run = *d.cards_of("/RUN")[0];
@@ -171,7 +166,7 @@ TEST(DeckReader, UnknownFieldNameThrows) {
 
 TEST(DeckReader, RigidBodiesSurfacesContactsWallsSprings) {
   const ReadResult r = read_deck(kDir / "small_0000.rad", Section::Starter);
-  ASSERT_TRUE(r.ok()) << all_messages(r);
+  ASSERT_TRUE(r.ok()) << messages(r);
   const Deck& d = r.deck;
   const Card& t8 = *d.cards_of("/PROP/TYPE8")[0];
   EXPECT_DOUBLE_EQ(t8.real(0, "Mass"), 0.002);

@@ -2,6 +2,7 @@
 // Round trip: read -> write -> read gives the same cards (ids, titles, every value and
 // its blank flag, texts), for the small decks and for one card of every keyword of the
 // table built with every field set (CardBuilder).
+#include "deck_test_support.hpp"
 #include "hbm/deck/io.hpp"
 
 #include <gtest/gtest.h>
@@ -11,16 +12,10 @@
 #include <sstream>
 
 using namespace hbm::deck;
+using hbm::deck::testing::kDir;
+using hbm::deck::testing::messages;
 
 namespace {
-
-const std::filesystem::path kDir = HBM_DECK_TEST_DIR;
-
-std::string messages(const ReadResult& r) {
-  std::ostringstream os;
-  print_diagnostics(os, r);
-  return os.str();
-}
 
 bool text_fits(double x, int width) {
   char buf[64];
@@ -114,25 +109,24 @@ void fill(CardBuilder& b, const LineSpec& ls, std::size_t line, bool row, bool n
 
 }  // namespace
 
-TEST(DeckRoundTrip, SmallStarterDeck) {
-  const ReadResult a = read_deck(kDir / "small_0000.rad", Section::Starter);
+namespace {
+
+// Reads ctest/deck/decks/<file>, writes it, reads the text back: the same cards.
+void expect_file_round_trip(const std::string& file, Section section) {
+  const ReadResult a = read_deck(kDir / file, section);
   ASSERT_TRUE(a.ok()) << messages(a);
   std::ostringstream os;
   write_deck(os, a.deck);
-  const ReadResult b = read_deck_text(os.str(), "written_0000.rad", Section::Starter);
+  const ReadResult b = read_deck_text(os.str(), "written_" + file, section);
   ASSERT_TRUE(b.ok()) << messages(b) << os.str();
   expect_same_cards(a.deck, b.deck, true);
 }
 
-TEST(DeckRoundTrip, SmallEngineDeck) {
-  const ReadResult a = read_deck(kDir / "small_0001.rad", Section::Engine);
-  ASSERT_TRUE(a.ok()) << messages(a);
-  std::ostringstream os;
-  write_deck(os, a.deck);
-  const ReadResult b = read_deck_text(os.str(), "written_0001.rad", Section::Engine);
-  ASSERT_TRUE(b.ok()) << messages(b) << os.str();
-  expect_same_cards(a.deck, b.deck, true);
-}
+}  // namespace
+
+TEST(DeckRoundTrip, SmallStarterDeck) { expect_file_round_trip("small_0000.rad", Section::Starter); }
+
+TEST(DeckRoundTrip, SmallEngineDeck) { expect_file_round_trip("small_0001.rad", Section::Engine); }
 
 // Every keyword of the table: a card with every field set, written and read back.
 TEST(DeckRoundTrip, EveryKeywordEveryField) {

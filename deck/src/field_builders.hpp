@@ -100,15 +100,21 @@ inline LineSpec line(std::string_view name, std::vector<FieldSpec> fields, bool 
 }
 
 // Tables of each section, assembled by keyword_table().
-// A starter object card with an id and a title line (/MAT/..., /PROP/..., /INTER/...).
-inline KeywordSpec object(std::string_view kw, std::string_view meaning) {
+// A keyword of `section`: what its id is, whether a title line follows, what it means.
+inline KeywordSpec keyword(std::string_view kw, Section section, IdKind id, bool has_title,
+                           std::string_view meaning) {
   KeywordSpec k;
   k.keyword = kw;
-  k.section = Section::Starter;
-  k.id = IdKind::Object;
-  k.has_title = true;
+  k.section = section;
+  k.id = id;
+  k.has_title = has_title;
   k.meaning = meaning;
   return k;
+}
+
+// A starter object card with an id and a title line (/MAT/..., /PROP/..., /INTER/...).
+inline KeywordSpec object(std::string_view kw, std::string_view meaning) {
+  return keyword(kw, Section::Starter, IdKind::Object, true, meaning);
 }
 
 // Field names of id lists written 10 per line (/GRNOD, /SURF/PART, /TH objects).

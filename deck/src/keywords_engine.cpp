@@ -7,14 +7,9 @@ namespace hbm::deck::tables {
 
 namespace {
 
+// Engine cards have no title line.
 KeywordSpec card(std::string_view kw, IdKind id, std::string_view meaning) {
-  KeywordSpec k;
-  k.keyword = kw;
-  k.section = Section::Engine;
-  k.id = id;
-  k.has_title = false;
-  k.meaning = meaning;
-  return k;
+  return keyword(kw, Section::Engine, id, false, meaning);
 }
 
 }  // namespace

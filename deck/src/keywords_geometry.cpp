@@ -8,26 +8,38 @@ namespace hbm::deck::tables {
 
 namespace {
 
-KeywordSpec keyword(std::string_view kw, IdKind id, bool title, std::string_view meaning) {
-  KeywordSpec k;
-  k.keyword = kw;
-  k.section = Section::Starter;
-  k.id = id;
-  k.has_title = title;
-  k.meaning = meaning;
-  return k;
+KeywordSpec card(std::string_view kw, IdKind id, bool title, std::string_view meaning) {
+  return keyword(kw, Section::Starter, id, title, meaning);
 }
 
 FieldSpec node_ref(std::string_view name, int col, bool required, std::string_view meaning) {
   return id_field(name, col, RefKind::Node, required, meaning);
 }
 
+// Element line of a solid or shell block: element id, n_nodes required node ids n1..n8
+// (10 columns each), then `more` fields.
+LineSpec element_row(int n_nodes, std::vector<FieldSpec> more = {}) {
+  static constexpr std::string_view names[] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
+  std::vector<FieldSpec> f{own_id("id", 0, "element identifier")};
+  for (int i = 0; i < n_nodes; ++i) f.push_back(node_ref(names[i], 10 + 10 * i, true, "node"));
+  for (FieldSpec& m : more) f.push_back(std::move(m));
+  return line("element", std::move(f));
+}
+
+// Shell element line: the nodes, then orientation angle and thickness.
+LineSpec shell_row(int n_nodes) {
+  return element_row(n_nodes, {
+      real_field("phi", 60, Dimension::Angle, kAny, 0, "orthotropy angle (deg)"),
+      real_field("thick", 80, Dimension::Length, kNonNegative, 0, "thickness (0 = thickness of the part's property)"),
+  });
+}
+
 }  // namespace
 
 void add_starter_geometry(std::vector<KeywordSpec>& out) {
   {
-    KeywordSpec k = keyword("/BEGIN", IdKind::None, true,
-                            "First card of the starter deck: run name (title line), version, units.");
+    KeywordSpec k = card("/BEGIN", IdKind::None, true,
+                         "First card of the starter deck: run name (title line), version, units.");
     k.lines.push_back(line("version", {
         int_field("Invers", 0, 2017, 2100, 2024, "input format version (2024)", Dimension::Count),
         int_field("Irun", 10, 0, 99, 0, "run number (0 = new run)", Dimension::Count),
@@ -44,10 +56,10 @@ void add_starter_geometry(std::vector<KeywordSpec>& out) {
     }));
     out.push_back(std::move(k));
   }
-  out.push_back(keyword("/END", IdKind::None, false, "Last card of the starter deck."));
-  out.push_back(keyword("/TITLE", IdKind::None, true, "Model title (one free line)."));
+  out.push_back(card("/END", IdKind::None, false, "Last card of the starter deck."));
+  out.push_back(card("/TITLE", IdKind::None, true, "Model title (one free line)."));
   {
-    KeywordSpec k = keyword("/NODE", IdKind::None, false, "Nodes: one node per line.");
+    KeywordSpec k = card("/NODE", IdKind::None, false, "Nodes: one node per line.");
     k.rows = line("node", {
         own_id("id", 0, "node identifier"),
         real_field("X", 10, Dimension::Length, kAny, 0, "X coordinate"),
@@ -57,49 +69,31 @@ void add_starter_geometry(std::vector<KeywordSpec>& out) {
     out.push_back(std::move(k));
   }
   {
-    KeywordSpec k = keyword("/BRICK", IdKind::Part, false,
-                            "8-node solid elements of part part_id (keyword id). n1-n4 one face, "
-                            "n5-n8 the opposite face, positive Jacobian.");
-    std::vector<FieldSpec> f{own_id("id", 0, "element identifier")};
-    static constexpr std::string_view names[] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
-    for (int i = 0; i < 8; ++i) f.push_back(node_ref(names[i], 10 + 10 * i, true, "node"));
-    k.rows = line("element", std::move(f));
+    KeywordSpec k = card("/BRICK", IdKind::Part, false,
+                         "8-node solid elements of part part_id (keyword id). n1-n4 one face, "
+                         "n5-n8 the opposite face, positive Jacobian.");
+    k.rows = element_row(8);
     out.push_back(std::move(k));
   }
   {
-    KeywordSpec k = keyword("/TETRA4", IdKind::Part, false,
-                            "4-node tetrahedra of part part_id; (n2-n1)x(n3-n1).(n4-n1) > 0.");
-    std::vector<FieldSpec> f{own_id("id", 0, "element identifier")};
-    static constexpr std::string_view names[] = {"n1", "n2", "n3", "n4"};
-    for (int i = 0; i < 4; ++i) f.push_back(node_ref(names[i], 10 + 10 * i, true, "node"));
-    k.rows = line("element", std::move(f));
+    KeywordSpec k = card("/TETRA4", IdKind::Part, false,
+                         "4-node tetrahedra of part part_id; (n2-n1)x(n3-n1).(n4-n1) > 0.");
+    k.rows = element_row(4);
     out.push_back(std::move(k));
   }
   {
-    KeywordSpec k = keyword("/SHELL", IdKind::Part, false, "4-node shells of part part_id.");
-    std::vector<FieldSpec> f{own_id("id", 0, "element identifier")};
-    static constexpr std::string_view names[] = {"n1", "n2", "n3", "n4"};
-    for (int i = 0; i < 4; ++i) f.push_back(node_ref(names[i], 10 + 10 * i, true, "node"));
-    f.push_back(real_field("phi", 60, Dimension::Angle, kAny, 0, "orthotropy angle (deg)"));
-    f.push_back(real_field("thick", 80, Dimension::Length, kNonNegative, 0,
-                           "thickness (0 = thickness of the part's property)"));
-    k.rows = line("element", std::move(f));
+    KeywordSpec k = card("/SHELL", IdKind::Part, false, "4-node shells of part part_id.");
+    k.rows = shell_row(4);
     out.push_back(std::move(k));
   }
   {
-    KeywordSpec k = keyword("/SH3N", IdKind::Part, false, "3-node shells of part part_id.");
-    std::vector<FieldSpec> f{own_id("id", 0, "element identifier")};
-    static constexpr std::string_view names[] = {"n1", "n2", "n3"};
-    for (int i = 0; i < 3; ++i) f.push_back(node_ref(names[i], 10 + 10 * i, true, "node"));
-    f.push_back(real_field("phi", 60, Dimension::Angle, kAny, 0, "orthotropy angle (deg)"));
-    f.push_back(real_field("thick", 80, Dimension::Length, kNonNegative, 0,
-                           "thickness (0 = thickness of the part's property)"));
-    k.rows = line("element", std::move(f));
+    KeywordSpec k = card("/SH3N", IdKind::Part, false, "3-node shells of part part_id.");
+    k.rows = shell_row(3);
     out.push_back(std::move(k));
   }
   {
-    KeywordSpec k = keyword("/SPRING", IdKind::Part, false,
-                            "Spring elements of part part_id (property TYPE4, TYPE8 or TYPE13).");
+    KeywordSpec k = card("/SPRING", IdKind::Part, false,
+                         "Spring elements of part part_id (property TYPE4, TYPE8 or TYPE13).");
     k.rows = line("element", {
         own_id("id", 0, "element identifier"),
         node_ref("n1", 10, true, "node 1"),
