@@ -285,11 +285,45 @@ void build_rwall(BuildContext& ctx, const Card& c) {
   if (const auto* g2 = node_group_of(ctx, c, {"grnd_ID2", "grnod_id2", "grnd2", "grnd_id2"}, true))
     for (Index i : *g2) mark[static_cast<std::size_t>(i)] = 0;
   if (p.wall_node != kNoIndex) mark[static_cast<std::size_t>(p.wall_node)] = 0;
+  // Secondaries of rigid bodies go to their body (RigidWallPlane header); other
+  // dependent nodes (TYPE2 secondaries) cannot take a wall condition and are left out.
   std::vector<Index> sec;
-  for (std::size_t i = 0; i < n.n_nodes; ++i)
-    if (mark[i]) sec.push_back(static_cast<Index>(i));
-  if (sec.empty()) ctx.warning(c, "rigid wall has no secondary node (grnd_ID1 empty and none within Dsearch)");
-  ctx.add_constraint(std::make_unique<contact::RigidWallPlane>(p, std::move(sec)));
+  std::size_t n_dependent = 0, n_body = 0;
+  for (std::size_t i = 0; i < n.n_nodes; ++i) {
+    if (!mark[i]) continue;
+    if (!n.is_secondary[i]) sec.push_back(static_cast<Index>(i));
+    else mark[i] = 2;
+  }
+  std::vector<std::pair<rigid::WallContactBody*, std::vector<std::size_t>>> on_bodies;
+  for (const auto& k : ctx.model().constraints) {
+    auto* body = dynamic_cast<rigid::WallContactBody*>(k.get());
+    if (!body) continue;
+    std::vector<std::size_t> js;
+    const std::vector<Index>& bs = body->secondary_nodes();
+    for (std::size_t j = 0; j < bs.size(); ++j)
+      if (mark[static_cast<std::size_t>(bs[j])] == 2) {
+        js.push_back(j);
+        mark[static_cast<std::size_t>(bs[j])] = 3;
+      }
+    n_body += js.size();
+    if (!js.empty()) on_bodies.emplace_back(body, std::move(js));
+  }
+  for (std::size_t i = 0; i < n.n_nodes; ++i) n_dependent += mark[i] == 2;
+  if (n_body > 0 && p.wall_node != kNoIndex) {
+    ctx.error(c, *node_ref.row, node_ref.spec->name,
+              "moving rigid wall with " + std::to_string(n_body) +
+                  " rigid-body (/RBODY) secondary nodes is not supported (use a fixed wall, or remove them "
+                  "with grnd_ID2)");
+    return;
+  }
+  if (n_dependent > 0)
+    ctx.warning(c, std::to_string(n_dependent) +
+                       " secondary nodes are dependent nodes of a /INTER/TYPE2 tie and are left out of the wall");
+  if (sec.empty() && n_body == 0)
+    ctx.warning(c, "rigid wall has no secondary node (grnd_ID1 empty and none within Dsearch)");
+  auto wall = std::make_unique<contact::RigidWallPlane>(p, std::move(sec));
+  for (auto& [body, js] : on_bodies) wall->add_body(*body, js);
+  ctx.add_constraint(std::move(wall));
 }
 
 }  // namespace

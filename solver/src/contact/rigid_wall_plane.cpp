@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hbm::solver::contact {
 
@@ -22,6 +23,18 @@ RigidWallPlane::RigidWallPlane(RigidWallPlaneParams p, std::vector<Index> second
   v_prev_.assign(secondary_.size(), V3{});
 }
 
+void RigidWallPlane::add_body(rigid::WallContactBody& body, const std::vector<std::size_t>& js) {
+  if (js.empty()) return;
+  bodies_.push_back({&body, body_points_.size(), js.size()});
+  for (std::size_t j : js) {
+    rigid::WallContactPoint p;
+    p.secondary = j;
+    body_points_.push_back(p);
+    body_point_node_.push_back(body.secondary_nodes()[j]);
+    body_point_tied_.push_back(0);
+  }
+}
+
 void RigidWallPlane::gather_forces(const StepContext&, NodalState& nodes) {
   for (std::size_t k = 0; k < secondary_.size(); ++k) v_prev_[k] = get(nodes.v, static_cast<std::size_t>(secondary_[k]));
   if (p_.wall_node != kNoIndex) wall_v_prev_ = get(nodes.v, static_cast<std::size_t>(p_.wall_node));
@@ -32,6 +45,8 @@ void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& node
   const double dtn = 0.5 * (step.dt_prev + step.dt_next);  // the step a^n acted over
   fn_ = {};
   ft_ = {};
+  reaction_work_ += pending_work_;
+  pending_work_ = 0;
   if (dt <= 0) return;
   const V3 n = p_.normal;
   const bool moving = p_.wall_node != kNoIndex;
@@ -52,7 +67,10 @@ void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& node
     sum_m += nodes.mass[i];
     sum_mv += nodes.mass[i] * (dot(get(nodes.v, i), n) - r_[k]);
   }
-  if (sum_m == 0) return;
+  if (sum_m == 0) {
+    impose_on_bodies(step, nodes, wall_x);
+    return;
+  }
 
   // 2. Joint normal solve (a fixed wall has infinite mass: V_n' = 0).
   const double vwn0 = dot(wall_v0, n);
@@ -103,6 +121,58 @@ void RigidWallPlane::impose_velocities(const StepContext& step, NodalState& node
   const double inv = dtn > 0 ? 1.0 / dtn : 0.0;
   fn_ = -inv * impulse_n;
   ft_ = -inv * impulse_t;
+  impose_on_bodies(step, nodes, wall_x);
+}
+
+void RigidWallPlane::impose_on_bodies(const StepContext& step, NodalState& nodes, V3 wall_x) {
+  if (bodies_.empty()) return;
+  const double dt = step.dt_next;
+  const double dtn = 0.5 * (step.dt_prev + step.dt_next);
+  const V3 n = p_.normal;
+  const Eigen::Vector3d ne(n.x, n.y, n.z);
+  const double wall_level = dot(wall_x, n);
+  const double fric = p_.slide == 2 ? p_.fric : p_.slide == 1 ? std::numeric_limits<double>::infinity() : 0.0;
+  V3 impulse_n{}, impulse_t{};
+  for (const BodyOnWall& b : bodies_) {
+    bool contact = false;
+    for (std::size_t k = b.first; k < b.first + b.count && !contact; ++k) {
+      const Eigen::Vector3d x1 = b.body->predicted_position(nodes, body_points_[k].secondary, dt);
+      contact = body_point_tied_[k] || ne.dot(x1) < wall_level;
+    }
+    if (!contact) continue;
+    for (std::size_t k = b.first; k < b.first + b.count; ++k) {
+      rigid::WallContactPoint& p = body_points_[k];
+      const V3 x = get(nodes.x, static_cast<std::size_t>(body_point_node_[k]));
+      const double d = dot(x, n) - wall_level;
+      p.normal = ne;
+      p.floor = wall_level + std::min(d, 0.0);
+      const V3 target = x - std::max(d, 0.0) * n;
+      p.target = {target.x, target.y, target.z};
+      p.tied = body_point_tied_[k] != 0;
+      p.fric = fric;
+    }
+    const rigid::WallContactWork w =
+        b.body->resolve_wall_contacts(step, nodes, std::span(body_points_).subspan(b.first, b.count));
+    reaction_work_ += w.at_n;
+    pending_work_ += w.at_next;
+    for (std::size_t k = b.first; k < b.first + b.count; ++k) {
+      const rigid::WallContactPoint& p = body_points_[k];
+      if (!p.touched) continue;
+      const V3 imp{p.impulse.x(), p.impulse.y(), p.impulse.z()};
+      const auto i = static_cast<std::size_t>(body_point_node_[k]);
+      if (dtn > 0) {
+        nodes.contact_force.x[i] += imp.x / dtn;
+        nodes.contact_force.y[i] += imp.y / dtn;
+        nodes.contact_force.z[i] += imp.z / dtn;
+      }
+      impulse_n += dot(imp, n) * n;
+      impulse_t += imp - dot(imp, n) * n;
+      if (p_.slide == 1) body_point_tied_[k] = 1;
+    }
+  }
+  const double inv = dtn > 0 ? 1.0 / dtn : 0.0;
+  fn_ -= inv * impulse_n;
+  ft_ -= inv * impulse_t;
 }
 
 std::vector<std::string> RigidWallPlane::th_default_variables(ThKind kind) const {

@@ -17,9 +17,20 @@
 // and tangential (friction, tied) impulses are applied back to the wall node.
 // Wall force (time histories): the force of the model on the wall,
 //   F = -sum m_i (v_i' - v_i) / dt^n over the secondary nodes [force].
+//
+// Secondary nodes that are secondaries of a rigid body (/RBODY) cannot take a velocity
+// change (the body imposes theirs after this stage). For them the wall states per node
+// the same condition, x^{n+1} . n >= min(d^n, 0) from the wall (tied: x^{n+1} fixed;
+// Slide 2: Coulomb), and the body solves all its touching nodes at once
+// (rigid::WallContactBody, a projected Gauss-Seidel over the points): the impulses go to
+// the body's translation and angular momentum, their work into the reaction work. Needs
+// the rigid bodies registered before the wall (builders.def) so that the body's own
+// velocity update has run. Fixed walls only (a moving wall with rigid-body secondaries
+// is a deck error).
 #pragma once
 
 #include "hbm/solver/constraint.hpp"
+#include "rigid/wall_contact_body.hpp"
 #include "vec3.hpp"
 
 #include <string>
@@ -40,6 +51,8 @@ struct RigidWallPlaneParams {
 class RigidWallPlane : public Constraint {
  public:
   RigidWallPlane(RigidWallPlaneParams p, std::vector<Index> secondary);
+  // Secondary nodes of `body` (indices into body.secondary_nodes()) on this wall.
+  void add_body(rigid::WallContactBody& body, const std::vector<std::size_t>& body_secondaries);
 
   std::string_view kind() const override { return "/RWALL/PLANE"; }
   std::int64_t user_id() const override { return p_.id; }
@@ -59,8 +72,22 @@ class RigidWallPlane : public Constraint {
   V3 normal_force() const { return fn_; }       // on the wall, this cycle [force]
   V3 tangential_force() const { return ft_; }   // on the wall, this cycle [force]
   const std::vector<Index>& secondary() const { return secondary_; }
+  std::size_t n_body_nodes() const { return body_points_.size(); }
 
  private:
+  // Rigid-body secondaries: solved by their body (see the header comment).
+  // Adds the work of this step to reaction_work_ and pending_work_ (counted at t^{n+1}).
+  void impose_on_bodies(const StepContext& step, NodalState& nodes, V3 wall_x);
+  double pending_work_ = 0;  // body work of the last step's impulses due at t^{n+1}
+  struct BodyOnWall {
+    rigid::WallContactBody* body = nullptr;
+    std::size_t first = 0, count = 0;  // range in body_points_
+  };
+  std::vector<BodyOnWall> bodies_;
+  std::vector<rigid::WallContactPoint> body_points_;
+  std::vector<Index> body_point_node_;
+  std::vector<std::uint8_t> body_point_tied_;
+
   RigidWallPlaneParams p_;
   std::vector<Index> secondary_;
   std::vector<std::uint8_t> tied_;  // Slide 1: node stuck to the wall

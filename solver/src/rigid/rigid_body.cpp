@@ -80,10 +80,9 @@ void RigidBody::assemble(NodalState& nodes, double added_mass, const Eigen::Matr
   inv_inertia_used_ = principal.cwiseInverse();
 }
 
-void RigidBody::initialise(const NodalState& nodes, NodalState& out) {
+void RigidBody::start_motion(NodalState& nodes) {
   // Momentum and angular momentum of the initial nodal velocities (/INIVEL) about the
   // centre: the body starts with the rigid motion that carries them.
-  const auto m = static_cast<std::size_t>(main);
   double m_sec = 0;
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (Index s : secondary) {
@@ -102,19 +101,27 @@ void RigidBody::initialise(const NodalState& nodes, NodalState& out) {
   const Eigen::Vector3d w0 = load(nodes.omega, main);
   l += Q * principal.cwiseProduct(Q.transpose() * w0);  // main node's own spin, if any
   L = l;
-  store(out.v, main, vc);
+  store(nodes.v, main, vc);
   const Eigen::Vector3d w = angular_velocity(Q, L, principal.cwiseInverse());
-  store(out.omega, main, w);
-  (void)m;
+  store(nodes.omega, main, w);
+  // Scalar inertia seen by the core: 0.5 inertia |w|^2 = 0.5 w . J w, the body's spin
+  // energy, so that E_kin at t = 0 (computed from the nodes before the first cycle)
+  // includes the rotation. Also in inertia0: the build phase ends with inertia =
+  // inertia0 (the body sets inertia itself every cycle; the Rayleigh quotient is at
+  // least the smallest principal moment, so no step limit is relaxed).
+  const auto mi = static_cast<std::size_t>(main);
+  const Eigen::Vector3d wb = Q.transpose() * w;
+  if (w.squaredNorm() > 0) nodes.inertia0[mi] = nodes.inertia[mi] = wb.dot(principal.cwiseProduct(wb)) / w.squaredNorm();
   velocity_ = velocity_prev_ = vc;
   omega_ = omega_prev_ = w;
+  omega_written_ = w;
   L_prev_ = L;
   kinetic_prev_ = 0.5 * mass * vc.squaredNorm() + rotational_energy(Q, L, principal.cwiseInverse());
   initialised_ = true;
 }
 
 void RigidBody::gather_forces(const StepContext& step, NodalState& nodes) {
-  if (!initialised_) initialise(nodes, nodes);
+  if (!initialised_) start_motion(nodes);
   const Eigen::Vector3d xm = load(nodes.x, main);
   Eigen::Vector3d F = load(nodes.force, main);
   Eigen::Vector3d M = load(nodes.moment, main);
@@ -157,8 +164,13 @@ void RigidBody::impose_velocities(const StepContext& step, NodalState& nodes) {
   if (need > principal.minCoeff() + added_inertia) added_inertia = need - principal.minCoeff();
   inv_inertia_used_ = inverse_inertia();
   mass_used_ = nodes.mass[mi];
-  Q_next_ = free_rotation_step(Q, L, inv_inertia_used_, step.dt_next);  // exact free flow
-  omega_written_ = rotation_vector(Q_next_ * Q.transpose()) / step.dt_next;
+  predict_rotation(nodes, step.dt_next);
+}
+
+void RigidBody::predict_rotation(NodalState& nodes, double dt) {
+  const auto mi = static_cast<std::size_t>(main);
+  Q_next_ = free_rotation_step(Q, L, inv_inertia_used_, dt);  // exact free flow
+  omega_written_ = rotation_vector(Q_next_ * Q.transpose()) / dt;
   store(nodes.omega, main, omega_written_);
   // Scalar inertia seen by the core: Rayleigh quotient of the tensor for this omega.
   const double w2 = omega_written_.squaredNorm();

@@ -27,10 +27,13 @@
 // centre), KE (kinetic energy, translation + rotation); velocities and momenta at t^n
 // are the means of the half-step values (as the engine's node velocities and kinetic
 // energy), so that sum x^n x m v^n + AM is the exact invariant of the scheme.
+// Rigid walls acting on secondaries: WallContactBody (wall_contact_body.hpp), solved in
+// rigid_wall_contact.cpp.
 #pragma once
 
 #include "hbm/solver/constraint.hpp"
 #include "rigid/rigid_mass_properties.hpp"
+#include "rigid/wall_contact_body.hpp"
 
 #include <Eigen/Dense>
 
@@ -39,7 +42,7 @@
 
 namespace hbm::solver::rigid {
 
-class RigidBody final : public Constraint {
+class RigidBody final : public Constraint, public WallContactBody {
  public:
   std::int64_t id = 0;
   std::string title;
@@ -61,11 +64,23 @@ class RigidBody final : public Constraint {
   void assemble(NodalState& nodes, double added_mass, const Eigen::Matrix3d& given_inertia,
                 bool include_main_in_centre, bool spherical);
 
+  // Initial motion from the nodal velocities (/INIVEL) of the secondaries and the main
+  // node: centre velocity, angular momentum, the main node's v, omega and scalar inertia
+  // (Rayleigh quotient, so that the engine's E_kin(t = 0) includes the spin). Called by
+  // finish_rigid_bodies after the loads; otherwise on the first gather_forces.
+  void start_motion(NodalState& nodes);
+
   std::string_view kind() const override { return "/RBODY"; }
   std::int64_t user_id() const override { return id; }
   void gather_forces(const StepContext& step, NodalState& nodes) override;
   void impose_velocities(const StepContext& step, NodalState& nodes) override;
   void impose_dependent(const StepContext& step, NodalState& nodes) override;
+
+  // WallContactBody (rigid_wall_contact.cpp).
+  const std::vector<Index>& secondary_nodes() const override { return secondary; }
+  Eigen::Vector3d predicted_position(const NodalState& nodes, std::size_t j, double dt) const override;
+  WallContactWork resolve_wall_contacts(const StepContext& step, NodalState& nodes,
+                               std::span<WallContactPoint> points) override;
 
   std::optional<ThProbe> th_probe(ThKind kind, std::int64_t id,
                                   std::string_view variable) const override;
@@ -86,7 +101,8 @@ class RigidBody final : public Constraint {
   Eigen::Vector3d inverse_inertia() const { return (principal.array() + added_inertia).inverse().matrix(); }
 
  private:
-  void initialise(const NodalState& nodes, NodalState& out);
+  // Q_next from Q and L over dt (exact free flow); the main node's omega and scalar inertia.
+  void predict_rotation(NodalState& nodes, double dt);
   bool initialised_ = false;
   Eigen::Matrix3d Q_next_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d omega_written_ = Eigen::Vector3d::Zero();
@@ -98,6 +114,9 @@ class RigidBody final : public Constraint {
   double mass_used_ = 0;
   Eigen::Vector3d inv_inertia_used_ = Eigen::Vector3d::Ones();
   std::int64_t steps_since_orthonormalize_ = 0;
+  // Wall contact scratch (sized on first contact).
+  std::vector<std::uint8_t> contact_active_;
+  std::vector<Eigen::Vector3d> contact_arm_, contact_x_;
 };
 
 }  // namespace hbm::solver::rigid
