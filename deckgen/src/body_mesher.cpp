@@ -317,7 +317,10 @@ void Builder::build_torso() {
   // Organ sets: thoracic inside the rib cage (T1-T12 layers), abdominal below; one part per
   // (set, mass region).
   auto organ_part = [&](const LayerInfo& L) {
-    bool thoracic = L.vertebra.size() > 1 && L.vertebra[0] == 'T';
+    // The organ block under the diaphragm (T10-T12 layers, abdomen region: liver, stomach,
+    // spleen inside the lower rib cage) takes the abdominal set, as the seed model's
+    // thoracic/abdominal split follows the diaphragm, not the vertebral level.
+    bool thoracic = L.vertebra.size() > 1 && L.vertebra[0] == 'T' && L.region == "thorax";
     std::string set = thoracic ? "thoracic_organs" : "abdominal_organs";
     std::string name = set + (L.region == (thoracic ? "thorax" : "abdomen") ? "" : "_" + L.region);
     return part(name, ElementKind::Brick, material(set), L.region, "organs");
