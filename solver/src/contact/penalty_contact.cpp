@@ -201,6 +201,10 @@ void PenaltyContact::sort(const NodalState& nodes) {
     cand_segment_.insert(cand_segment_.end(), found.begin(), found.end());
     cand_start_[i + 1] = static_cast<std::uint32_t>(cand_segment_.size());
   }
+  cand_segments_used_.assign(cand_segment_.begin(), cand_segment_.end());
+  std::sort(cand_segments_used_.begin(), cand_segments_used_.end());
+  cand_segments_used_.erase(std::unique(cand_segments_used_.begin(), cand_segments_used_.end()),
+                            cand_segments_used_.end());
   sort_x_.resize(tracked_.size());
   sort_y_.resize(tracked_.size());
   sort_z_.resize(tracked_.size());
@@ -227,7 +231,8 @@ void PenaltyContact::update_segment_cache(const NodalState& nodes) {
   seg_normal_.resize(ns);
   seg_warp_.resize(ns);
   seg_radius_.resize(ns);
-  for (std::size_t s = 0; s < ns; ++s) {
+  for (const Index si : cand_segments_used_) {
+    const auto s = static_cast<std::size_t>(si);
     const std::array<V3, 4> c = corners(nodes, surf_.nodes[s]);
     const bool tri = surf_.is_triangle(s);
     const V3 ctr = tri ? (1.0 / 3.0) * (c[0] + c[1] + c[2]) : 0.25 * (c[0] + c[1] + c[2] + c[3]);

@@ -138,7 +138,11 @@ class PenaltyContact {
   BucketGrid grid_;
   std::vector<Box> boxes_;
   std::size_t n_sorts_ = 0;
-  // Per-cycle segment geometry for the cheap rejection test.
+  // Segments that are a candidate of some secondary node (sorted, set by sort()): the
+  // only ones whose per-cycle geometry is read.
+  std::vector<Index> cand_segments_used_;
+  // Per-cycle segment geometry for the cheap rejection test (valid for the candidate
+  // segments only).
   std::vector<V3> seg_centre_, seg_normal_;
   std::vector<double> seg_warp_, seg_radius_;
 

@@ -94,6 +94,7 @@ BuildContext::BuildContext(const hbm::deck::Deck& starter, const hbm::deck::Deck
     if (p.mat_id != 0) {
       p.mat_card = material(p.mat_id);
       if (!p.mat_card) error(*c, c->lines.at(0), "mat_id", "no material " + std::to_string(p.mat_id));
+      else p.mat_keyword = std::string(p.mat_card->keyword());
     }
     if (!t.parts.emplace(p.id, static_cast<Index>(model.parts.size())).second) {
       error(*c, "part id " + std::to_string(p.id) + " defined twice");

@@ -8,6 +8,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <ctime>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace hbm::solver {
 
@@ -18,12 +23,58 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+// CPU time of the calling thread [s]: with other processes on the cores it stays the
+// cost of the work, where the wall time also counts the time the thread waited.
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Wall and calling-thread CPU time of one phase, added to PhaseTimes on stop().
+class PhaseTimer {
+ public:
+  PhaseTimer() : wall0_(Clock::now()), cpu0_(thread_cpu_seconds()) {}
+  void stop(double& wall, double& cpu) const {
+    wall += seconds_since(wall0_);
+    cpu += thread_cpu_seconds() - cpu0_;
+  }
+
+ private:
+  Clock::time_point wall0_;
+  double cpu0_;
+};
+
+// Nodal loops (assembly, velocity and position updates, sums) cost a few ns per node;
+// a parallel region costs microseconds when both cores are free and milliseconds when
+// another process holds one of the 2 cores (measured: docs/engine-design.md section 14,
+// 2 threads 3-12x slower than 1 on the nodal phases). They run on one thread below
+// this size; results do not depend on it (every node is computed alone, sums use
+// fixed chunks).
+constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
+
+// Element groups with fewer chunks than this run on one thread inside their own
+// compute_forces (as the solid and shell groups decide); several of them then run side
+// by side, one group per thread, in one parallel region per cycle.
+constexpr std::size_t kSmallGroupChunks = 8;
+
+// Per-group CPU time is sampled on one cycle in this many (see compute_element_forces).
+constexpr std::int64_t kCpuSampleCycles = 16;
+
+int max_threads() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 // Deterministic parallel sum over nodes: fixed chunks, partials summed in chunk order.
 template <class F>
 double node_sum(std::size_t n, std::vector<double>& scratch, F&& per_node) {
   const std::size_t nch = n_chunks(n);
   scratch.assign(nch, 0.0);
-#pragma omp parallel for schedule(static) if (nch > 8)
+#pragma omp parallel for schedule(static) if (n >= kParallelNodes)
   for (std::size_t ch = 0; ch < nch; ++ch) {
     double s = 0.0;
     const std::size_t end = std::min(n, (ch + 1) * kChunk);
@@ -58,12 +109,43 @@ double GlobalEnergies::energy_error() const {
 }
 
 // Each group: slot forces f_e = -f_int + hourglass + viscous at t^n from x^n, v^{n-1/2}.
+// Large groups run one after the other, each parallel over its own chunks; small groups
+// (one thread each inside) are shared out between the threads in one parallel region.
+// A group's results never depend on which thread ran it.
 void compute_element_forces(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
-  c.group_results.assign(m.groups.size(), GroupStepResult{});
-  for (std::size_t g = 0; g < m.groups.size(); ++g)
+  const PhaseTimer t0;
+  const std::size_t ng = m.groups.size();
+  c.group_results.assign(ng, GroupStepResult{});
+  if (c.group_seconds.size() != ng) c.group_seconds.assign(ng, 0.0);
+  if (c.group_cpu_seconds.size() != ng) c.group_cpu_seconds.assign(ng, 0.0);
+  // The thread CPU clock is a system call (about 0.5 us): per group it is read on one
+  // cycle in kCpuSampleCycles only and scaled (the wall clock is read every cycle).
+  const bool sample_cpu = c.step.cycle % kCpuSampleCycles == 0;
+  auto run_group = [&](std::size_t g) {
+    const auto w0 = Clock::now();
+    const double cpu0 = sample_cpu ? thread_cpu_seconds() : 0.0;
     m.groups[g]->compute_forces(c.step, m.nodes, c.group_results[g]);
-  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    c.group_seconds[g] += seconds_since(w0);
+    if (sample_cpu) c.group_cpu_seconds[g] += kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
+  };
+  const bool share_small = max_threads() > 1;
+  std::vector<std::size_t>& small = c.small_groups;
+  small.clear();
+  for (std::size_t g = 0; g < ng; ++g) {
+    if (share_small && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks)
+      small.push_back(g);
+    else
+      run_group(g);
+  }
+  if (!small.empty()) {
+#ifdef _OPENMP
+    // Nested regions inside a group run on the calling thread.
+    omp_set_max_active_levels(1);
+#endif
+#pragma omp parallel for schedule(dynamic, 1) if (small.size() > 1)
+    for (std::size_t k = 0; k < small.size(); ++k) run_group(small[k]);
+  }
+  for (std::size_t g = 0; g < ng; ++g) {
     ElementGroup& grp = *m.groups[g];
     for (Index e : grp.newly_eroded) {
       const Part& p = m.parts[static_cast<std::size_t>(grp.part)];
@@ -73,61 +155,145 @@ void compute_element_forces(Model& m, CycleState& c) {
     }
     grp.newly_eroded.clear();
   }
-  c.times.element_forces += seconds_since(t0);
+  t0.stop(c.times.element_forces, c.cpu_times.element_forces);
+}
+
+bool AssemblyPlan::built_for(const Model& m) const {
+  return n_groups == m.groups.size() && start.size() == m.incidence_start.size() &&
+         entries.size() == m.incidence_slot.size();
+}
+
+void AssemblyPlan::build(const Model& m) {
+  const std::size_t nn = m.incidence_start.empty() ? 0 : m.incidence_start.size() - 1;
+  n_groups = m.groups.size();
+  start.assign(nn + 1, 0);
+  rot_start.assign(nn + 1, 0);
+  entries.clear();
+  rot_entries.clear();
+  entries.reserve(m.incidence_slot.size());
+  for (std::size_t i = 0; i < nn; ++i) {
+    for (std::int64_t j = m.incidence_start[i]; j < m.incidence_start[i + 1]; ++j) {
+      const Entry e{static_cast<std::uint32_t>(m.incidence_group[static_cast<std::size_t>(j)]),
+                    static_cast<std::uint32_t>(m.incidence_slot[static_cast<std::size_t>(j)])};
+      entries.push_back(e);
+      if (m.groups[e.group]->has_rotation_slots()) rot_entries.push_back(e);
+    }
+    start[i + 1] = static_cast<std::uint32_t>(entries.size());
+    rot_start[i + 1] = static_cast<std::uint32_t>(rot_entries.size());
+  }
 }
 
 // f_i = sum over the slots of node i in (group, element) order; same for M_i, k_n, k_r.
+// One thread: scatter, group after group, slot after slot: the slot buffers are read
+// in memory order and the nodal arrays stay in cache; each node receives its slots in
+// (group, element) order, the order of the gather, so the sums are the same bits.
+// Several threads (large models): node-ordered gather through the packed plan (each
+// node summed by one thread).
 void assemble_nodal_forces(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   NodalState& n = m.nodes;
   const std::size_t nn = n.n_nodes;
-  const auto* start = m.incidence_start.data();
-  const auto* grp = m.incidence_group.data();
-  const auto* slot = m.incidence_slot.data();
-  const auto& groups = m.groups;
-#pragma omp parallel for schedule(static) if (nn > 2048)
-  for (std::size_t i = 0; i < nn; ++i) {
-    double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0, mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
-    for (std::int64_t j = start[i]; j < start[i + 1]; ++j) {
-      const ElementGroup& g = *groups[static_cast<std::size_t>(grp[j])];
-      const auto s = static_cast<std::size_t>(slot[j]);
-      fx += g.slot_force.x[s];
-      fy += g.slot_force.y[s];
-      fz += g.slot_force.z[s];
-      k += g.slot_stiffness[s];
-      if (g.has_rotation_slots()) {
-        mx += g.slot_moment.x[s];
-        my += g.slot_moment.y[s];
-        mz += g.slot_moment.z[s];
-        kr += g.slot_rot_stiffness[s];
+  double* __restrict fxo = n.force.x.data();
+  double* __restrict fyo = n.force.y.data();
+  double* __restrict fzo = n.force.z.data();
+  double* __restrict ko = n.stiffness.data();
+  double* __restrict mxo = n.moment.x.data();
+  double* __restrict myo = n.moment.y.data();
+  double* __restrict mzo = n.moment.z.data();
+  double* __restrict kro = n.rot_stiffness.data();
+  if (nn < kParallelNodes || max_threads() == 1) {
+    for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a, a + nn, 0.0);
+    for (const auto& gp : m.groups) {
+      const ElementGroup& g = *gp;
+      const Index* conn = g.connectivity.data();
+      const std::size_t ns = g.connectivity.size();
+      const double *gfx = g.slot_force.x.data(), *gfy = g.slot_force.y.data(), *gfz = g.slot_force.z.data(),
+                   *gk = g.slot_stiffness.data();
+      for (std::size_t s = 0; s < ns; ++s) {
+        const auto i = static_cast<std::size_t>(conn[s]);
+        fxo[i] += gfx[s];
+        fyo[i] += gfy[s];
+        fzo[i] += gfz[s];
+        ko[i] += gk[s];
+      }
+      if (!g.has_rotation_slots()) continue;
+      const double *gmx = g.slot_moment.x.data(), *gmy = g.slot_moment.y.data(), *gmz = g.slot_moment.z.data(),
+                   *gkr = g.slot_rot_stiffness.data();
+      for (std::size_t s = 0; s < ns; ++s) {
+        const auto i = static_cast<std::size_t>(conn[s]);
+        mxo[i] += gmx[s];
+        myo[i] += gmy[s];
+        mzo[i] += gmz[s];
+        kro[i] += gkr[s];
       }
     }
-    n.force.x[i] = fx;
-    n.force.y[i] = fy;
-    n.force.z[i] = fz;
-    n.stiffness[i] = k;
-    n.moment.x[i] = mx;
-    n.moment.y[i] = my;
-    n.moment.z[i] = mz;
-    n.rot_stiffness[i] = kr;
-    n.force_ext.x[i] = n.force_ext.y[i] = n.force_ext.z[i] = 0.0;
-    n.contact_force.x[i] = n.contact_force.y[i] = n.contact_force.z[i] = 0.0;
+  } else {
+    AssemblyPlan& plan = c.assembly;
+    if (!plan.built_for(m)) plan.build(m);
+    // Slot buffers of every group (stable within a cycle).
+    auto& ptr = c.slot_pointers;
+    ptr.resize(m.groups.size());
+    for (std::size_t g = 0; g < m.groups.size(); ++g) {
+      const ElementGroup& grp = *m.groups[g];
+      ptr[g] = {grp.slot_force.x.data(), grp.slot_force.y.data(), grp.slot_force.z.data(),
+                grp.slot_stiffness.data(), grp.slot_moment.x.data(), grp.slot_moment.y.data(),
+                grp.slot_moment.z.data(), grp.slot_rot_stiffness.data()};
+    }
+    const SlotPointers* P = ptr.data();
+    const std::uint32_t* start = plan.start.data();
+    const AssemblyPlan::Entry* ent = plan.entries.data();
+    const std::uint32_t* rstart = plan.rot_start.data();
+    const AssemblyPlan::Entry* rent = plan.rot_entries.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < nn; ++i) {
+      double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0;
+      for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
+        const SlotPointers& p = P[ent[j].group];
+        const std::uint32_t s = ent[j].slot;
+        fx += p.fx[s];
+        fy += p.fy[s];
+        fz += p.fz[s];
+        k += p.k[s];
+      }
+      fxo[i] = fx;
+      fyo[i] = fy;
+      fzo[i] = fz;
+      ko[i] = k;
+      double mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
+      for (std::uint32_t j = rstart[i]; j < rstart[i + 1]; ++j) {
+        const SlotPointers& p = P[rent[j].group];
+        const std::uint32_t s = rent[j].slot;
+        mx += p.mx[s];
+        my += p.my[s];
+        mz += p.mz[s];
+        kr += p.kr[s];
+      }
+      mxo[i] = mx;
+      myo[i] = my;
+      mzo[i] = mz;
+      kro[i] = kr;
+    }
   }
-  c.times.assembly += seconds_since(t0);
+  for (Vec3Soa* v : {&n.force_ext, &n.contact_force}) {
+    std::fill(v->x.begin(), v->x.end(), 0.0);
+    std::fill(v->y.begin(), v->y.end(), 0.0);
+    std::fill(v->z.begin(), v->z.end(), 0.0);
+  }
+  t0.stop(c.times.assembly, c.cpu_times.assembly);
 }
 
 // Contacts, walls, gravity and loads add into f, M, k_n in registration order.
 void add_interaction_forces(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   for (auto& i : m.interactions) i->add_forces(c.step, m.nodes);
-  c.times.interactions += seconds_since(t0);
+  t0.stop(c.times.interactions, c.cpu_times.interactions);
 }
 
 // Stage 1 of the constraints: rigid bodies move f, M, k_n of secondaries to the main node.
 void gather_constraint_forces(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   for (auto& k : m.constraints) k->gather_forces(c.step, m.nodes);
-  c.times.constraints += seconds_since(t0);
+  t0.stop(c.times.constraints, c.cpu_times.constraints);
 }
 
 // dt^{n+1/2}. /DT/NODA/CST: dt = Tmin and, where Tsca sqrt(2 m / k_n) < Tmin,
@@ -135,7 +301,7 @@ void gather_constraint_forces(Model& m, CycleState& c) {
 // Otherwise dt = Tsca * min(element critical steps, interaction critical steps).
 // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2.
 void choose_time_step(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   const RunControl& rc = m.control;
   NodalState& n = m.nodes;
   if (rc.nodal_cst) {
@@ -190,16 +356,16 @@ void choose_time_step(Model& m, CycleState& c) {
     if (!std::isfinite(c.step.dt_next) && c.step.dt_prev > 0.0) c.step.dt_next = c.step.dt_prev;
   }
   c.dt_mid = 0.5 * (c.step.dt_prev + c.step.dt_next);
-  c.times.time_step += seconds_since(t0);
+  t0.stop(c.times.time_step, c.cpu_times.time_step);
 }
 
 // a^n = f^n / m;  v^{n+1/2} = v^{n-1/2} + dt^n a^n;  omega likewise with M / I.
 void update_velocities(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   NodalState& n = m.nodes;
   const double dt = c.dt_mid;
   const std::size_t nn = n.n_nodes;
-#pragma omp parallel for schedule(static) if (nn > 2048)
+#pragma omp parallel for schedule(static) if (nn >= kParallelNodes)
   for (std::size_t i = 0; i < nn; ++i) {
     if (n.is_secondary[i] || !(n.mass[i] > 0.0)) continue;
     const double inv_m = 1.0 / n.mass[i];
@@ -218,22 +384,23 @@ void update_velocities(Model& m, CycleState& c) {
     n.omega.y[i] += dt * n.moment.y[i] * inv;
     n.omega.z[i] += dt * n.moment.z[i] * inv;
   }
-  c.times.nodal_update += seconds_since(t0);
+  t0.stop(c.times.nodal_update, c.cpu_times.nodal_update);
 }
 
 // Stage 2 (rigid rotation, /BCS, /IMPVEL, walls) then stage 3 (rigid secondaries).
 void impose_constraints(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   StepContext s = c.step;
   for (auto& k : m.constraints) k->impose_velocities(s, m.nodes);
   for (auto& k : m.constraints) k->impose_dependent(s, m.nodes);
-  c.times.constraints += seconds_since(t0);
+  t0.stop(c.times.constraints, c.cpu_times.constraints);
 }
 
 // Energies through t^n: internal and hourglass from the groups, contact and external
 // work from the interactions and constraints. Kinetic energies come from
 // update_velocities (before constraints; the constrained nodes are corrected here).
 void account_energies(Model& m, CycleState& c) {
+  const PhaseTimer t0;
   GlobalEnergies& E = c.energies;
   E.internal = E.hourglass = E.contact = 0.0;
   double wext = 0.0;
@@ -254,38 +421,46 @@ void account_energies(Model& m, CycleState& c) {
   //   E_kin(t^n) = 0.5 m |v^{n-1/2}|^2 + 0.5 dt^n m a^n . v^{n-1/2},
   // with a^n the acceleration after constraints and v^{n-1/2} = v^{n+1/2} - dt^n a^n.
   // Rotational: mean of the half-step values. Rigid-body secondaries are carried by their
-  // main node and not counted.
-  {
-    const NodalState& nd = m.nodes;
-    const double dt = c.dt_mid;
-    const double corr = node_sum(nd.n_nodes, c.chunk_scratch, [&](std::size_t i) {
-      if (nd.is_secondary[i]) return 0.0;
+  // main node and not counted. One pass over the nodes: the translational sums by fixed
+  // chunks (as node_sum), the rotational and added-mass sums in node order.
+  const NodalState& nd = m.nodes;
+  const double dt = c.dt_mid;
+  const std::size_t nn = nd.n_nodes;
+  double corr = 0.0, ke = 0.0, ker = 0.0, added = 0.0;
+  for (std::size_t ch = 0; ch < n_chunks(nn); ++ch) {
+    double s_corr = 0.0, s_ke = 0.0;
+    const std::size_t end = std::min(nn, (ch + 1) * kChunk);
+    for (std::size_t i = ch * kChunk; i < end; ++i) {
+      if (nd.is_secondary[i]) continue;
       const double ax = nd.a.x[i], ay = nd.a.y[i], az = nd.a.z[i];
-      return 0.5 * dt * nd.mass[i] *
-             (ax * (nd.v.x[i] - dt * ax) + ay * (nd.v.y[i] - dt * ay) + az * (nd.v.z[i] - dt * az));
-    });
-    const auto [ke, ker] = half_step_kinetic(nd, c.chunk_scratch);
-    // At t^0 the initial kinetic energy itself (forces of a velocity jump at t^0 have
-    // done no work yet).
-    E.kinetic = c.step.cycle == 0 ? c.kinetic_half_prev : c.kinetic_half_prev + corr;
-    E.rotational = 0.5 * (c.rotational_half_prev + ker);
-    c.kinetic_half_prev = ke;
-    c.rotational_half_prev = ker;
+      const double vx = nd.v.x[i], vy = nd.v.y[i], vz = nd.v.z[i];
+      s_corr += 0.5 * dt * nd.mass[i] * (ax * (vx - dt * ax) + ay * (vy - dt * ay) + az * (vz - dt * az));
+      s_ke += 0.5 * nd.mass[i] * (vx * vx + vy * vy + vz * vz);
+      added += nd.added_mass[i];
+      if (nd.has_rotation[i])
+        ker += 0.5 * nd.inertia[i] *
+               (nd.omega.x[i] * nd.omega.x[i] + nd.omega.y[i] * nd.omega.y[i] + nd.omega.z[i] * nd.omega.z[i]);
+    }
+    corr += s_corr;
+    ke += s_ke;
   }
-  const NodalState& n = m.nodes;
-  double added = 0.0;
-  for (std::size_t i = 0; i < n.n_nodes; ++i)
-    if (!n.is_secondary[i]) added += n.added_mass[i];
+  // At t^0 the initial kinetic energy itself (forces of a velocity jump at t^0 have
+  // done no work yet).
+  E.kinetic = c.step.cycle == 0 ? c.kinetic_half_prev : c.kinetic_half_prev + corr;
+  E.rotational = 0.5 * (c.rotational_half_prev + ker);
+  c.kinetic_half_prev = ke;
+  c.rotational_half_prev = ker;
   E.added_mass = added;
+  t0.stop(c.times.energies, c.cpu_times.energies);
 }
 
 // x^{n+1} = x^n + dt^{n+1/2} v^{n+1/2};  t^{n+1} = t^n + dt^{n+1/2}.
 void update_positions(Model& m, CycleState& c) {
-  const auto t0 = Clock::now();
+  const PhaseTimer t0;
   NodalState& n = m.nodes;
   const double dt = c.step.dt_next;
   const std::size_t nn = n.n_nodes;
-#pragma omp parallel for schedule(static) if (nn > 2048)
+#pragma omp parallel for schedule(static) if (nn >= kParallelNodes)
   for (std::size_t i = 0; i < nn; ++i) {
     n.x.x[i] += dt * n.v.x[i];
     n.x.y[i] += dt * n.v.y[i];
@@ -294,7 +469,7 @@ void update_positions(Model& m, CycleState& c) {
   c.step.time += dt;
   c.step.dt_prev = dt;
   ++c.step.cycle;
-  c.times.nodal_update += seconds_since(t0);
+  t0.stop(c.times.nodal_update, c.cpu_times.nodal_update);
 }
 
 void run_cycle(Model& m, CycleState& c) {

@@ -4,6 +4,7 @@
 // listing with ETA, final per-part mass report and per-phase timing table.
 #include "hbm/solver/run.hpp"
 
+#include "core/thread_chooser.hpp"
 #include "output/th_writer.hpp"
 #include "output/units.hpp"
 #include "output/vtk_writer.hpp"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -48,6 +50,12 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 std::string where_mass_went(const Model& m, const CycleState& c, const hbm::deck::Units& u) {
   std::vector<std::size_t> parts(m.parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) parts[i] = i;
@@ -80,6 +88,12 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   RunResult res;
 #ifdef _OPENMP
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  // Without a thread count the run measures 1 thread against all and keeps the faster.
+  ThreadChooser chooser(opt.threads > 0 ? 1 : omp_get_max_threads());
+  const int fixed_threads = opt.threads > 0 ? opt.threads : 0;
+#else
+  ThreadChooser chooser(1);
+  const int fixed_threads = 1;
 #endif
   const RunControl& rc = model.control;
   const hbm::deck::Units& u = model.units;
@@ -138,9 +152,14 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   double next_th = 0.0, next_anim = rc.anim_start;
   const double tol = 1e-9 * rc.t_stop;
   const auto wall0 = Clock::now();
+  const double cpu0 = process_cpu_seconds();
   double output_seconds = 0.0;
   Vec3Soa vel_out;
   for (;;) {
+    const auto cycle0 = Clock::now();
+#ifdef _OPENMP
+    if (fixed_threads == 0) omp_set_num_threads(chooser.next_threads());
+#endif
     compute_element_forces(model, c);
     assemble_nodal_forces(model, c);
     add_interaction_forces(model, c);
@@ -149,6 +168,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
     update_velocities(model, c);
     impose_constraints(model, c);
     account_energies(model, c);
+    chooser.cycle_done(std::chrono::duration<double>(Clock::now() - cycle0).count());
     model.dt_output = c.step.dt_next;
     const double t = c.step.time;
     for (const auto& e : c.events) listing.line("  " + e);
@@ -235,20 +255,74 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   const double cycles = static_cast<double>(std::max<std::int64_t>(c.step.cycle + 1, 1));
   const double ne = static_cast<double>(std::max<std::size_t>(n_elements, 1));
   const double nn = static_cast<double>(std::max<std::size_t>(model.nodes.n_nodes, 1));
+  // validation_report.py reads this heading: keep its form.
   listing.line("TIMING (wall " + fmt("%.3f", wall) + " s, " + std::to_string(c.step.cycle + 1) + " cycles)");
-  auto row = [&](const char* name, double s, double per, const char* what) {
-    char b[200];
-    std::snprintf(b, sizeof b, "  %-16s %10.4f s  %6.1f %%  %10.1f ns per %s-cycle", name, s,
-                  100.0 * s / std::max(wall, 1e-12), 1e9 * s / (per * cycles), what);
+  const std::string threads_text =
+      fixed_threads > 0 || chooser.max_threads() == 1
+          ? std::to_string(fixed_threads > 0 ? fixed_threads : 1)
+          : "chosen per stretch: " + std::to_string(chooser.cycles_one()) + " cycles on 1, " +
+                std::to_string(chooser.cycles_max()) + " on " + std::to_string(chooser.max_threads()) +
+                " (last probe: " + chooser.last_choice() + ")";
+  listing.line("  threads " + threads_text + ", process CPU time " + fmt("%.3f", process_cpu_seconds() - cpu0) +
+               " s");
+  // Per phase: wall seconds, share of the wall time, ns per element- or node-cycle from
+  // the wall time and from the main thread's CPU time (the robust figure on a loaded
+  // machine with 1 thread).
+  auto row = [&](const char* name, double s, double cpu, double per, const char* what) {
+    char b[240];
+    std::snprintf(b, sizeof b, "  %-16s %10.4f s  %6.1f %%  %10.1f ns per %s-cycle  (CPU %8.1f)", name, s,
+                  100.0 * s / std::max(wall, 1e-12), 1e9 * s / (per * cycles), what, 1e9 * cpu / (per * cycles));
     listing.line(b);
   };
-  row("element forces", c.times.element_forces, ne, "element");
-  row("contact/loads", c.times.interactions, nn, "node");
-  row("assembly", c.times.assembly, nn, "node");
-  row("constraints", c.times.constraints, nn, "node");
-  row("time step", c.times.time_step, nn, "node");
-  row("nodal update", c.times.nodal_update, nn, "node");
-  row("output", c.times.output, nn, "node");
+  const PhaseTimes& pc = c.cpu_times;
+  row("element forces", c.times.element_forces, pc.element_forces, ne, "element");
+  row("contact/loads", c.times.interactions, pc.interactions, nn, "node");
+  row("assembly", c.times.assembly, pc.assembly, nn, "node");
+  row("constraints", c.times.constraints, pc.constraints, nn, "node");
+  row("time step", c.times.time_step, pc.time_step, nn, "node");
+  row("nodal update", c.times.nodal_update, pc.nodal_update, nn, "node");
+  row("energies", c.times.energies, pc.energies, nn, "node");
+  row("output", c.times.output, 0.0, nn, "node");
+  {
+    const PhaseTimes& p = c.times;
+    const double rest = wall - (p.element_forces + p.interactions + p.assembly + p.constraints + p.time_step +
+                                p.nodal_update + p.energies + p.output);
+    row("rest of loop", std::max(rest, 0.0), 0.0, nn, "node");
+  }
+  // Element forces by kind (keyword, material law, formulation): wall time of the
+  // groups' compute_forces (with several threads the small groups run side by side, so
+  // the rows add up to more than the phase) and CPU time sampled on 1 cycle in 16.
+  listing.line("ELEMENT FORCES BY KIND");
+  {
+    struct Kind {
+      std::string label;
+      double seconds = 0, cpu = 0;
+      std::size_t elements = 0, groups = 0;
+    };
+    std::vector<Kind> kinds;
+    for (std::size_t g = 0; g < model.groups.size() && g < c.group_seconds.size(); ++g) {
+      const ElementGroup& grp = *model.groups[g];
+      const Part& p = model.parts[static_cast<std::size_t>(grp.part)];
+      std::string law = p.mat_keyword.rfind("/MAT/", 0) == 0 ? p.mat_keyword.substr(5) : p.mat_keyword;
+      const std::string label = grp.keyword + " " + (law.empty() ? "-" : law) + " " + std::string(grp.formulation());
+      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return k.label == label; });
+      if (it == kinds.end()) {
+        kinds.push_back({label});
+        it = kinds.end() - 1;
+      }
+      it->seconds += c.group_seconds[g];
+      it->cpu += c.group_cpu_seconds[g];
+      it->elements += grp.n_elements;
+      ++it->groups;
+    }
+    for (const Kind& k : kinds) {
+      char b[360];
+      const double per = static_cast<double>(std::max<std::size_t>(k.elements, 1)) * cycles;
+      std::snprintf(b, sizeof b, "  %-64s %6zu el %3zu gr %9.4f s  %8.1f ns per element-cycle  (CPU %8.1f)",
+                    k.label.c_str(), k.elements, k.groups, k.seconds, 1e9 * k.seconds / per, 1e9 * k.cpu / per);
+      listing.line(b);
+    }
+  }
   listing.line("");
   res.reason = c.stop;
   res.energies = c.energies;

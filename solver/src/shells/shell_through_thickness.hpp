@@ -26,13 +26,27 @@ inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, d
   const double ht = 0.5 * t;
   const int nh = m.n_history();
   const double eps_fail = m.eps_p_max();
+  // Elastic law (the body model's shells): the plane-stress Hooke update of
+  // update_point, inlined here with the same expressions (bitwise the same stresses).
+  const bool elastic = m.law == ShellLaw::Elastic;
+  const double E = m.E, nu = m.nu;
+  const double c = E / (1.0 - nu * nu);
   for (int p = 0; p < s.n_points; ++p) {
     double* sp = stress + 3 * p;
     if (epsp[p] >= eps_fail) continue;  // failed point
     const double z = s.zeta[p] * ht;
     const double de[3] = {dem[0] + z * dk[0], dem[1] + z * dk[1], dem[2] + z * dk[2]};
     PointStress st{sp[0], sp[1], sp[2]};
-    const PointResult pr = update_point(m, de, dt, st, epsp[p], hist + nh * p);
+    PointResult pr;
+    if (elastic) {
+      const double S_old = st.sxx + st.syy;
+      st.sxx += c * (de[0] + nu * de[1]);
+      st.syy += c * (nu * de[0] + de[1]);
+      st.sxy += c * 0.5 * (1.0 - nu) * de[2];
+      pr.dezz = -nu / E * (st.sxx + st.syy - S_old);
+    } else {
+      pr = update_point(m, de, dt, st, epsp[p], hist + nh * p);
+    }
     const double w = s.weight[p] * ht;
     r.dE += 0.5 * w * ((sp[0] + st.sxx) * de[0] + (sp[1] + st.syy) * de[1] + (sp[2] + st.sxy) * de[2]);
     r.dezz += 0.5 * s.weight[p] * pr.dezz;

@@ -27,7 +27,30 @@ struct GlobalEnergies {
 // Wall-clock seconds spent per phase, for the timing table and the bench.
 struct PhaseTimes {
   double element_forces = 0, interactions = 0, assembly = 0, constraints = 0,
-         time_step = 0, nodal_update = 0, output = 0;
+         time_step = 0, nodal_update = 0, energies = 0, output = 0;
+};
+
+// The slot buffers of one group for the assembly (moment pointers null without
+// rotational DOFs).
+struct SlotPointers {
+  const double *fx, *fy, *fz, *k, *mx, *my, *mz, *kr;
+};
+
+// Node-ordered gather plan of the assembly, derived from Model::incidence_* on the
+// first cycle: entry (group, slot) packed in 8 bytes, and a second CSR that lists only
+// the slots of groups with rotational DOFs (moments, k_r), so that the many nodes of
+// translational elements read no moment slots.
+struct AssemblyPlan {
+  struct Entry {
+    std::uint32_t group, slot;
+  };
+  std::vector<std::uint32_t> start;      // n_nodes + 1, all slots of node i
+  std::vector<Entry> entries;
+  std::vector<std::uint32_t> rot_start;  // n_nodes + 1, rotational slots of node i
+  std::vector<Entry> rot_entries;
+  std::size_t n_groups = 0;
+  bool built_for(const Model& m) const;
+  void build(const Model& m);
 };
 
 // Why a cycle asks the loop to stop (None = keep going).
@@ -38,9 +61,21 @@ struct CycleState {
   double dt_mid = 0.0;  // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2, the velocity-update step
   GlobalEnergies energies;
   PhaseTimes times;
+  // CPU time of the calling (main) thread per phase: the robust figure on a loaded
+  // machine with 1 thread (with more threads it misses the other threads' share).
+  PhaseTimes cpu_times;
   StopReason stop = StopReason::None;
   std::string stop_message;  // element / part / time or parts that took the mass
   std::vector<GroupStepResult> group_results;  // one per group, this cycle
+  // Wall seconds of each group's compute_forces, summed over the cycles (the listing's
+  // per-formulation timing rows) [s].
+  std::vector<double> group_seconds;
+  // The same in CPU time of the thread that ran the group, sampled on one cycle in 16
+  // and scaled (an estimate; the clock is a system call) [s].
+  std::vector<double> group_cpu_seconds;
+  AssemblyPlan assembly;
+  std::vector<SlotPointers> slot_pointers;  // per group, refreshed every cycle
+  std::vector<std::size_t> small_groups;    // groups shared out between threads
   // Where /DT/NODA/CST put mass: per group, per element (allocated on first use) [mass].
   std::vector<std::vector<double>> element_added_mass;
   std::vector<std::string> events;  // element deletions etc., printed by the run loop

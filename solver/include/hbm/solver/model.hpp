@@ -26,6 +26,7 @@ struct Part {
   const hbm::deck::Card* part_card = nullptr;  // valid during build only
   const hbm::deck::Card* prop_card = nullptr;  // nullptr if prop_id = 0
   const hbm::deck::Card* mat_card = nullptr;
+  std::string mat_keyword;  // e.g. "/MAT/LAW34" (listing), empty without material
   double mass0 = 0.0;        // physical mass of its elements [mass]
   double added_mass = 0.0;   // mass scaling attributed to this part (see engine-design.md)
 };

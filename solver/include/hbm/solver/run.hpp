@@ -14,7 +14,9 @@ namespace hbm::solver {
 
 struct RunOptions {
   std::filesystem::path out_dir = ".";  // listing, CSV, VTK go here
-  int threads = 0;                      // OpenMP threads; 0 = library default
+  int threads = 0;                      // OpenMP threads; 0 = chosen during the run: 1 or
+                                        //   the OpenMP maximum, whichever is faster
+                                        //   (core/thread_chooser.hpp)
   std::ostream* console = nullptr;      // stdout copy of the listing (nullptr: none)
 };
 
