@@ -5,11 +5,12 @@ springs_tools, contact_*/make_deck.py).
 
 Starter cards are in Radioss block format as docs/deck-format.md lists them and as the C++
 deck writer (deck/src/deck_writer.cpp) writes them: integers right-aligned in 10 columns,
-reals right-aligned in 20 columns (here with 13 significant digits), trailing default
-fields left out, /BEGIN with the kg mm ms units; /NODE comes right after /BEGIN. Engine
-cards are free format, numbers in their shortest exact text. A card whose title or field
-cannot be written raises ValueError naming the deck and the card; files are written to a
-temporary name and renamed when complete.
+reals right-aligned in 20 columns (here with 13 significant digits), /BEGIN with the kg
+mm ms units, /NODE right after /BEGIN; optional fields at the end of a line that a
+generator does not set are left blank (the reader's default). Engine cards are free
+format, numbers in their shortest exact text. A card whose title or field cannot be
+written raises ValueError naming the deck and the card; files are written to a temporary
+name and renamed when complete.
 Units of the examples: kg, mm, ms (force kN, stress GPa, energy J)."""
 
 import os
