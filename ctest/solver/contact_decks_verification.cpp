@@ -15,6 +15,8 @@
 //    transmitted amplitude within 3% of the control bar's.
 //  - contact_moving_wall: a moving /RWALL/PLANE (node, Mass, VX0) strikes a free block:
 //    X momentum of wall + block conserved to the CSV precision at every output.
+#include "example_deck_runner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,64 +30,12 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using namespace hbm::solver::testing;
 
 namespace {
 
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  int col(const std::string& part) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i].find(part) != std::string::npos) return static_cast<int>(i);
-    ADD_FAILURE() << "no column containing '" << part << "'";
-    return 0;
-  }
-  std::vector<double> column(int c) const {
-    std::vector<double> v;
-    for (const auto& r : rows) v.push_back(r[static_cast<std::size_t>(c)]);
-    return v;
-  }
-};
-
-Csv read_csv(const fs::path& p) {
-  Csv c;
-  std::ifstream in(p);
-  EXPECT_TRUE(in.good()) << p;
-  std::string line;
-  if (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string f;
-    while (std::getline(ss, f, ',')) c.header.push_back(f);
-  }
-  while (std::getline(in, line)) {
-    std::vector<double> r;
-    std::stringstream ss(line);
-    std::string f;
-    while (std::getline(ss, f, ',')) r.push_back(std::strtod(f.c_str(), nullptr));
-    if (r.size() == c.header.size()) c.rows.push_back(r);
-  }
-  return c;
-}
-
-// Copies the case's decks into ./<name>/ and runs hbm-solver there; returns the exit code.
-int run_case(const std::string& name) {
-#ifndef HBM_SOLVER_EXE
-  return -1;
-#else
-  const fs::path src = fs::path(HBM_SOURCE_DIR) / "decks" / "examples" / name;
-  const fs::path dir = fs::current_path() / name;
-  fs::create_directories(dir);
-  for (const char* suffix : {"_0000.rad", "_0001.rad"})
-    fs::copy_file(src / (name + suffix), dir / (name + suffix), fs::copy_options::overwrite_existing);
-  const std::string cmd = "cd '" + dir.string() + "' && '" + HBM_SOLVER_EXE + "' " + name +
-                          "_0000.rad > run.log 2>&1";
-  const int rc = std::system(cmd.c_str());
-  return rc == 0 ? 0 : (rc > 255 ? rc >> 8 : rc);
-#endif
-}
-
 // Lumped nodal masses of an n x n x n block of bricks of element mass me, in the node
-// order of decks/examples/contact_tools/radioss_deck.py block_mesh (i fastest).
+// order of decks/examples/deck_tools/radioss_deck.py Deck.block (i fastest).
 std::vector<double> block_masses(int nx, int ny, int nz, double me) {
   std::vector<double> m;
   auto c = [](int a, int n) { return (a == 0 || a == n) ? 1 : 2; };
@@ -112,9 +62,10 @@ bool run_case_skip() {
 TEST(ContactDecks, BlocksCollideConserveMomentumAndEnergy) {
   REQUIRE_SOLVER();
   const std::string name = "contact_blocks_collide";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
-  const Csv nodes = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
-  const Csv inter = read_csv(fs::path(name) / (name + "_TH_INTER_1.csv"));
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
+  const ThTable nodes = read_th(out / (name + "_TH_NODE_2.csv"));
+  const ThTable inter = read_th(out / (name + "_TH_INTER_1.csv"));
   const double h = 10.0 / 6, me = 1e-6 * h * h * h, v0 = 5.0, m_block = 1e-3;
   std::vector<double> m = block_masses(6, 6, 6, me);
   const std::vector<double> mb = m;
@@ -126,18 +77,16 @@ TEST(ContactDecks, BlocksCollideConserveMomentumAndEnergy) {
     for (std::size_t i = 0; i < m.size(); ++i) p += m[i] * r[9 + i];
     EXPECT_NEAR(p, p0, 1e-9 * p0) << "t = " << r[0];
   }
-  const int err = inter.col("energy error"), ec = inter.col("contact energy");
-  for (const auto& r : inter.rows) EXPECT_LT(std::abs(r[static_cast<std::size_t>(err)]), 0.01) << "t = " << r[0];
+  const std::size_t err = inter.col("energy error"), ec = inter.col("contact energy");
+  for (const auto& r : inter.rows) EXPECT_LT(std::abs(r[err]), 0.01) << "t = " << r[0];
   const auto& last = inter.rows.back();
-  EXPECT_LT(std::abs(last[static_cast<std::size_t>(ec)]), 1e-3 * e0);
-  EXPECT_EQ(last[static_cast<std::size_t>(inter.col("inter 1 A nodes on B FNX"))], 0.0);
-#ifdef HBM_PYTHON
+  EXPECT_LT(std::abs(last[ec]), 1e-3 * e0);
+  EXPECT_EQ(last[inter.col("inter 1 A nodes on B FNX")], 0.0);
   // The VTK frames carry the nodal contact forces (point vector "contact_force"), read
   // back with VTK's own reader: in the frame during the impact (t = 0.1 ms) the forces are
   // non-zero and, being action and reaction between the blocks, sum to zero in X
   // (round-off, 1e-9 of the largest nodal force); before contact (t = 0) they are zero.
-  const fs::path script = fs::path(name) / "contact_force_frames.py";
-  std::ofstream(script) << R"(import sys, vtk
+  run_python("contact_force_frames.py", R"(import sys, vtk
 def frame(path):
     r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(path); r.Update()
     a = r.GetOutput().GetPointData().GetArray('contact_force')
@@ -150,22 +99,21 @@ s1, m1 = frame(sys.argv[1] + '_0001.vtu')
 print('t=0.1 ms: max |fx|', m1, 'sum fx', s1)
 assert m1 > 1e-4, m1
 assert abs(s1) < 1e-9 * m1, s1
-)";
-  const std::string cmd = std::string(HBM_PYTHON) + " " + script.string() + " " + (fs::path(name) / name).string();
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-#endif
+)",
+             (out / name).string());
 }
 
 TEST(ContactDecks, SphereOnRigidWallMatchesHertz) {
   REQUIRE_SOLVER();
   const std::string name = "contact_sphere_rwall";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
   // Hertz, sphere on a rigid plane (Johnson 1985 §11.4); values of make_deck.py.
   const double R = 10, rho = 1e-6, E = 0.01, nu = 0.3, v0 = 1.0;
   const double estar = E / (1 - nu * nu), mass = rho * 4.0 / 3.0 * M_PI * R * R * R;
   const double dmax = std::pow(15 * mass * v0 * v0 / (16 * estar * std::sqrt(R)), 0.4);
   const double fmax = 4.0 / 3.0 * estar * std::sqrt(R) * std::pow(dmax, 1.5);
-  const Csv wall = read_csv(fs::path(name) / (name + "_TH_RWALL_1.csv"));
+  const ThTable wall = read_th(out / (name + "_TH_RWALL_1.csv"));
   const std::vector<double> t = wall.column(0), fz = wall.column(wall.col("FNZ"));
   double peak = 0, t_end = 0;
   for (std::size_t k = 0; k < fz.size(); ++k) {
@@ -175,7 +123,7 @@ TEST(ContactDecks, SphereOnRigidWallMatchesHertz) {
   EXPECT_NEAR(peak, fmax, 0.10 * fmax) << "Hertz F_max " << fmax << " kN";
   EXPECT_GT(t_end, 0.0);
   EXPECT_LT(t_end, t.back() - 0.1) << "the sphere must have left the wall";
-  const Csv centre = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const ThTable centre = read_th(out / (name + "_TH_NODE_2.csv"));
   const std::vector<double> tc = centre.column(0), vz = centre.column(centre.col("VZ"));
   double sum = 0;
   int n = 0;
@@ -185,20 +133,20 @@ TEST(ContactDecks, SphereOnRigidWallMatchesHertz) {
   const double rebound = sum / n;
   EXPECT_GT(rebound, 0.9 * v0);
   EXPECT_LT(rebound, 1.0 * v0 + 1e-3);
-  const int err = wall.col("energy error");
-  EXPECT_LT(std::abs(wall.rows.back()[static_cast<std::size_t>(err)]), 0.02);
+  const std::size_t err = wall.col("energy error");
+  EXPECT_LT(std::abs(wall.rows.back()[err]), 0.02);
 }
 
 namespace {
 // Mass-weighted mean X velocity of a 2x2x2 block (27 nodes) whose VX columns start at c0.
-std::vector<double> block_vx(const Csv& c, const std::vector<int>& cols) {
+std::vector<double> block_vx(const ThTable& c, const std::vector<std::size_t>& cols) {
   const std::vector<double> w = block_masses(2, 2, 2, 1.0);
   std::vector<double> v;
   double ws = 0;
   for (double x : w) ws += x;
   for (const auto& r : c.rows) {
     double s = 0;
-    for (std::size_t i = 0; i < w.size(); ++i) s += w[i] * r[static_cast<std::size_t>(cols[i])];
+    for (std::size_t i = 0; i < w.size(); ++i) s += w[i] * r[cols[i]];
     v.push_back(s / ws);
   }
   return v;
@@ -219,20 +167,21 @@ double slope(const std::vector<double>& t, const std::vector<double>& v, double 
 TEST(ContactDecks, BlockSlidingDeceleratesAtMuG) {
   REQUIRE_SOLVER();
   const std::string name = "contact_block_slide";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
   const double mu = 0.3, g = 1.0;
-  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_3.csv"));
-  std::vector<int> vx;
+  const ThTable c = read_th(out / (name + "_TH_NODE_3.csv"));
+  std::vector<std::size_t> vx;
   for (std::size_t i = 9; i < c.header.size(); ++i)
-    if (c.header[i].find(" VX ") != std::string::npos) vx.push_back(static_cast<int>(i));
+    if (c.header[i].find(" VX ") != std::string::npos) vx.push_back(i);
   ASSERT_EQ(vx.size(), 54u);
   const std::vector<double> t = c.column(0);
-  const std::vector<int> b2(vx.begin(), vx.begin() + 27), b3(vx.begin() + 27, vx.end());
+  const std::vector<std::size_t> b2(vx.begin(), vx.begin() + 27), b3(vx.begin() + 27, vx.end());
   // Fit over 0.1-0.8 ms, after the settling bounce and before the stop at 1 ms.
   EXPECT_NEAR(-slope(t, block_vx(c, b2), 0.1, 0.8), mu * g, 0.02 * mu * g) << "TYPE7 friction";
   EXPECT_NEAR(-slope(t, block_vx(c, b3), 0.1, 0.8), mu * g, 0.02 * mu * g) << "RWALL friction";
   // Wall: tangential / normal force = mu while sliding (force on the wall).
-  const Csv w = read_csv(fs::path(name) / (name + "_TH_RWALL_2.csv"));
+  const ThTable w = read_th(out / (name + "_TH_RWALL_2.csv"));
   const std::vector<double> tw = w.column(0), fn = w.column(w.col("FNZ")), ft = w.column(w.col("FTX"));
   for (std::size_t k = 0; k < tw.size(); ++k) {
     if (tw[k] > 0.1 && tw[k] < 0.8 && std::abs(fn[k]) > 0) {
@@ -244,8 +193,9 @@ TEST(ContactDecks, BlockSlidingDeceleratesAtMuG) {
 TEST(ContactDecks, TiedBarTransmitsTheWave) {
   REQUIRE_SOLVER();
   const std::string name = "contact_tied_bar";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
-  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
+  const ThTable c = read_th(out / (name + "_TH_NODE_2.csv"));
   const std::vector<double> t = c.column(0), b50 = c.column(c.col("bar1 x50")),
                             b150 = c.column(c.col("bar1 x150")), c50 = c.column(c.col("control x50")),
                             c150 = c.column(c.col("control x150"));
@@ -265,9 +215,10 @@ TEST(ContactDecks, TiedBarTransmitsTheWave) {
 TEST(ContactDecks, FoldedShellStripDoesNotCrossItself) {
   REQUIRE_SOLVER();
   const std::string name = "contact_shell_fold";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
   const double gap = 1.0, z_upper = 5.0;  // make_deck.py: t = 1, legs 2 RF = 5 mm apart
-  const Csv c = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const ThTable c = read_th(out / (name + "_TH_NODE_2.csv"));
   double dmin = 1e30, dz_min = 0;
   for (const auto& r : c.rows)
     for (int k = 0; k < 3; ++k) {
@@ -277,7 +228,7 @@ TEST(ContactDecks, FoldedShellStripDoesNotCrossItself) {
     }
   EXPECT_GT(dmin, 0.0) << "the upper leg went through the lower one";
   EXPECT_LT(dmin, gap) << "the legs never came within the gap: no contact tested";
-  const Csv i = read_csv(fs::path(name) / (name + "_TH_INTER_3.csv"));
+  const ThTable i = read_th(out / (name + "_TH_INTER_3.csv"));
   double nact = 0;
   for (double v : i.column(i.col("NACT"))) nact = std::max(nact, v);
   EXPECT_GT(nact, 10.0);
@@ -291,18 +242,19 @@ TEST(ContactDecks, MovingWallOfGivenMassConservesMomentum) {
   // happened (the wall lost more than 10% of its speed).
   REQUIRE_SOLVER();
   const std::string name = "contact_moving_wall";
-  ASSERT_EQ(run_case(name), 0) << "see " << name << "/run.log";
-  const Csv nodes = read_csv(fs::path(name) / (name + "_TH_NODE_2.csv"));
+  const fs::path out = run_deck(name);
+  ASSERT_FALSE(out.empty());
+  const ThTable nodes = read_th(out / (name + "_TH_NODE_2.csv"));
   const double mw = 2e-3, vw = 3.0, h = 10.0 / 4, me = 1e-6 * h * h * h, p0 = mw * vw;
   const std::vector<double> m = block_masses(4, 4, 4, me);
-  const int wall = nodes.col("node 1000 wall VX");
-  ASSERT_EQ(nodes.header.size(), static_cast<std::size_t>(wall) + 1 + m.size());
+  const std::size_t wall = nodes.col("node 1000 wall VX");
+  ASSERT_EQ(nodes.header.size(), wall + 1 + m.size());
   for (const auto& r : nodes.rows) {
-    double p = mw * r[static_cast<std::size_t>(wall)];
-    for (std::size_t i = 0; i < m.size(); ++i) p += m[i] * r[static_cast<std::size_t>(wall) + 1 + i];
+    double p = mw * r[wall];
+    for (std::size_t i = 0; i < m.size(); ++i) p += m[i] * r[wall + 1 + i];
     EXPECT_NEAR(p, p0, 1e-9 * p0) << "t = " << r[0];
   }
-  EXPECT_LT(nodes.rows.back()[static_cast<std::size_t>(wall)], 0.9 * vw);
+  EXPECT_LT(nodes.rows.back()[wall], 0.9 * vw);
 }
 
 TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {
@@ -342,8 +294,7 @@ TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {
   const std::string cmd = "cd '" + dir.string() + "' && '" + HBM_SOLVER_EXE + "' bad_0000.rad > run.log 2>&1";
   const int rc = std::system(cmd.c_str());
   EXPECT_NE(rc, 0);
-  std::ifstream log(dir / "run.log");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  const std::string text = read_text(dir / "run.log");
   EXPECT_NE(text.find("bad_0000.rad:"), std::string::npos) << text;
   EXPECT_NE(text.find("/RWALL/PLANE/7"), std::string::npos) << text;
   EXPECT_NE(text.find("M1 equals M"), std::string::npos) << text;

@@ -10,72 +10,34 @@
 //    displacement L (exp(eps_p_max + sigma_y/E) - 1) (1%); the part's eroded count ER in
 //    /TH/PART equals the deleted cells flagged 'eroded' = 1 in the last VTK frame (read
 //    back by VTK's own reader); the energy error column stays within 1%.
-#include "hbm/solver/run.hpp"
+#include "example_deck_runner.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace fs = std::filesystem;
-using namespace hbm::solver;
+using namespace hbm::solver::testing;
 
 namespace {
 
-fs::path deck(const std::string& name) {
-  return fs::path(HBM_SOURCE_DIR) / "decks" / "examples" / name / (name + "_0000.rad");
-}
-
+// Runs the example deck in process; its output folder.
 fs::path run(const std::string& name) {
-  const fs::path out = fs::current_path() / ("out_" + name);
-  fs::remove_all(out);
-  RunOptions opt;
-  opt.out_dir = out;
-  std::ostringstream err;
-  const RunResult r = run_deck(deck(name), opt, err);
-  EXPECT_TRUE(err.str().empty()) << err.str();
-  EXPECT_EQ(r.exit_code, 0) << r.message;
-  return out;
-}
-
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::size_t col(const std::string& part) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i].find(part) != std::string::npos) return i;
-    ADD_FAILURE() << "no column containing '" << part << "'";
-    return 0;
-  }
-};
-
-Csv read_csv(const fs::path& p) {
-  Csv c;
-  std::ifstream f(p);
-  EXPECT_TRUE(f.good()) << p;
-  std::string line;
-  std::getline(f, line);
-  std::stringstream hs(line);
-  for (std::string h; std::getline(hs, h, ',');) c.header.push_back(h);
-  while (std::getline(f, line)) {
-    std::vector<double> row;
-    std::stringstream ls(line);
-    for (std::string v; std::getline(ls, v, ',');) row.push_back(std::strtod(v.c_str(), nullptr));
-    if (row.size() == c.header.size()) c.rows.push_back(row);
-  }
-  return c;
+  const auto r = run_in_process(name);
+  EXPECT_EQ(r->result.exit_code, 0) << r->result.message;
+  return r->out;
 }
 
 void cantilever(bool tria) {
   const std::string name = std::string("shell_cantilever_grav_") + (tria ? "tria" : "quad");
   const fs::path out = run(name);
-  const Csv th = read_csv(out / (name + "_TH_NODE_1.csv"));
+  const ThTable th = read_th(out / (name + "_TH_NODE_1.csv"));
   ASSERT_GT(th.rows.size(), 100u);
   const std::size_t ct = th.col("time"), cz = th.col("DZ");
   // Same numbers as the deck generator (header of the deck).
@@ -117,7 +79,7 @@ void cantilever(bool tria) {
     }
   }
   // Energy error column (conservative elastic run).
-  const Csv pt = read_csv(out / (name + "_TH_PART_2.csv"));
+  const ThTable pt = read_th(out / (name + "_TH_PART_2.csv"));
   const std::size_t ce = pt.col("energy error"), cw = pt.col("external work");
   double wmax = 0;
   for (const auto& r : pt.rows) wmax = std::max(wmax, std::abs(r[cw]));
@@ -131,8 +93,8 @@ void cantilever(bool tria) {
 void pull(bool tria) {
   const std::string name = std::string("shell_pull_failure_") + (tria ? "tria" : "quad");
   const fs::path out = run(name);
-  const Csv nd = read_csv(out / (name + "_TH_NODE_1.csv"));
-  const Csv pt = read_csv(out / (name + "_TH_PART_2.csv"));
+  const ThTable nd = read_th(out / (name + "_TH_NODE_1.csv"));
+  const ThTable pt = read_th(out / (name + "_TH_PART_2.csv"));
   ASSERT_EQ(nd.rows.size(), pt.rows.size());
   const std::size_t cdx = nd.col("DX"), cer = pt.col("ER"), cerr = pt.col("energy error");
   const double L = 50, E = 210, a = 0.3, b = 0.2, epsmax = 0.1;
@@ -152,10 +114,7 @@ void pull(bool tria) {
   const double n_eroded = pt.rows.back()[cer];
   EXPECT_GE(n_eroded, tria ? 4.0 : 2.0);
   // The last VTK frame flags exactly the deleted cells.
-  const fs::path script = fs::current_path() / ("read_" + name + ".py");
-  {
-    std::ofstream py(script);
-    py << R"(import sys, vtk
+  run_python("read_" + name + ".py", R"(import sys, vtk
 import xml.etree.ElementTree as ET, os
 pvd = sys.argv[1]
 sets = ET.parse(pvd).getroot().find('Collection').findall('DataSet')
@@ -170,12 +129,8 @@ ct = set(g.GetCellType(i) for i in range(g.GetNumberOfCells()))
 print('eroded cells', n, 'cell types', sorted(ct))
 assert n == int(float(sys.argv[2])), (n, sys.argv[2])
 assert ct == {int(sys.argv[3])}, ct
-)";
-  }
-  const std::string cmd = std::string(HBM_PYTHON) + " " + script.string() + " " +
-                          (out / (name + ".pvd")).string() + " " + std::to_string(n_eroded) + " " +
-                          (tria ? "5" : "9");
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+)",
+             (out / (name + ".pvd")).string() + " " + std::to_string(n_eroded) + " " + (tria ? "5" : "9"));
 }
 
 }  // namespace

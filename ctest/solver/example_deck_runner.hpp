@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Runs a verification deck of decks/examples/<name>/ and reads its outputs back: the /TH
+// CSV files (header names -> columns), the listing, and VTK frames through a Python script
+// run with VTK's own reader. Two ways to run:
+//  - run_deck: the hbm-solver executable (HBM_SOLVER_EXE), outputs in
+//    ./out_<name><tag>/, its console in ./out_<name><tag>.log (any test area);
+//  - run_in_process: hbm::solver::run_deck in the test process, keeping the frozen model
+//    for inspection (tests linked with the whole engine: run_* and shelldecks_*).
+// Used by the deck verifications of the engine, shells, springs, rigid bodies and contact.
+#pragma once
+
+#include "hbm/solver/run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hbm::solver::testing {
+
+inline std::filesystem::path example_deck(const std::string& name) {
+  return std::filesystem::path(HBM_SOURCE_DIR) / "decks" / "examples" / name / (name + "_0000.rad");
+}
+
+// One /TH CSV file: the header line, then rows of numbers.
+struct ThTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  // Index of the first column whose header contains `key`; fails the test if none.
+  std::size_t col(const std::string& key) const {
+    for (std::size_t c = 0; c < header.size(); ++c)
+      if (header[c].find(key) != std::string::npos) return c;
+    ADD_FAILURE() << "no column containing '" << key << "'";
+    return 0;
+  }
+  std::vector<double> column(std::size_t c) const {
+    std::vector<double> out;
+    out.reserve(rows.size());
+    for (const auto& r : rows) out.push_back(r.at(c));
+    return out;
+  }
+  std::vector<double> column(const std::string& key) const { return column(col(key)); }
+};
+
+// Reads a CSV written by the engine; a row whose number of cells differs from the
+// header's fails the test (and is left out).
+inline ThTable read_th(const std::filesystem::path& path) {
+  ThTable t;
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << "cannot open " << path;
+  std::string line;
+  if (std::getline(in, line)) {
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) t.header.push_back(cell);
+  }
+  for (std::size_t n = 2; std::getline(in, line); ++n) {
+    std::vector<double> r;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) r.push_back(std::strtod(cell.c_str(), nullptr));
+    if (r.size() == t.header.size()) {
+      t.rows.push_back(std::move(r));
+    } else {
+      ADD_FAILURE() << path << ":" << n << ": " << r.size() << " cells, header has " << t.header.size();
+    }
+  }
+  return t;
+}
+
+// Whole text of a file (the listing <name>_0001.out, a console log).
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << "cannot open " << path;
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Run hbm-solver on decks/examples/<name>/<name>_0000.rad (extra command-line arguments
+// `args`, output folder suffix `tag`); returns the output folder (empty on failure).
+inline std::filesystem::path run_deck(const std::string& name, const std::string& args = "",
+                                      const std::string& tag = "") {
+#ifndef HBM_SOLVER_EXE
+  ADD_FAILURE() << "hbm-solver was not built";
+  return {};
+#else
+  const std::filesystem::path out = std::filesystem::current_path() / ("out_" + name + tag);
+  std::filesystem::remove_all(out);
+  const std::string cmd = std::string("'") + HBM_SOLVER_EXE + "' '" + example_deck(name).string() + "' --out '" +
+                          out.string() + "' " + args + " > '" + out.string() + ".log' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  EXPECT_EQ(rc, 0) << cmd << " (see " << out.string() << ".log)";
+  return rc == 0 ? out : std::filesystem::path{};
+#endif
+}
+
+// A run in the test process: the model as it was at the end, the result, the output folder.
+struct InProcessRun {
+  Model model;
+  RunResult result;
+  std::filesystem::path out;
+};
+
+// Runs `starter` (default: the example deck `name`) with `threads` (0: the default) into
+// ./out_<name>[_t<threads>]/; anything written to the error stream fails the test.
+inline std::unique_ptr<InProcessRun> run_in_process(const std::string& name, std::filesystem::path starter = {},
+                                                    int threads = 0) {
+  auto r = std::make_unique<InProcessRun>();
+  r->out = std::filesystem::current_path() / ("out_" + name + (threads ? "_t" + std::to_string(threads) : ""));
+  std::filesystem::remove_all(r->out);
+  RunOptions opt;
+  opt.out_dir = r->out;
+  opt.threads = threads;
+  std::ostringstream err;
+  r->result = hbm::solver::run_deck(starter.empty() ? example_deck(name) : starter, opt, err, r->model);
+  EXPECT_TRUE(err.str().empty()) << err.str();
+  return r;
+}
+
+// Writes `code` to ./<script_name> and runs it with the Python that has VTK (HBM_PYTHON),
+// arguments `args`; returns the exit status (0: the script's assertions held).
+inline int run_python(const std::string& script_name, const std::string& code, const std::string& args) {
+#ifndef HBM_PYTHON
+  ADD_FAILURE() << "no Python with VTK configured";
+  return -1;
+#else
+  const std::filesystem::path script = std::filesystem::current_path() / script_name;
+  std::ofstream(script) << code;
+  const std::string cmd = std::string(HBM_PYTHON) + " '" + script.string() + "' " + args;
+  const int rc = std::system(cmd.c_str());
+  EXPECT_EQ(rc, 0) << cmd;
+  return rc;
+#endif
+}
+
+}  // namespace hbm::solver::testing
