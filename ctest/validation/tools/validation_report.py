@@ -105,6 +105,9 @@ def main():
     ap.add_argument("--model", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--images", required=True)
+    ap.add_argument("--note", action="append", default=[], help="a provenance line printed under the header (repeatable)")
+    ap.add_argument("--model-label", default=None,
+                    help="how the table names the model (default: the --model path), e.g. when the runs used an older deck")
     a = ap.parse_args()
     cases = a.cases.split()
     doc_dir = os.path.dirname(os.path.abspath(a.out))
@@ -195,11 +198,15 @@ def main():
     L.append("# Validation: hub pendulum impacts on the body model")
     L.append("")
     L.append(f"Generated {now} from commit `{commit}`{' (model file modified)' if dirty else ''}; model "
-             f"`{a.model}` (sha256 {sha}); {os.cpu_count()} cores on the machine that ran it. "
+             f"`{a.model_label or a.model}` (sha256 {sha}); {os.cpu_count()} cores on the machine that ran it. "
              "Decks: `hbm-loadcase` (`decks/<case>/`), runs: `hbm-solver`, ratings: `hbm-corridors` "
              "(ISO/TS 18571 and CORA as described in `docs/corridors.md`). Load cases and method: "
              "see the end of this page.")
     L.append("")
+    for n in a.note:
+        L.append(f"- {n}")
+    if a.note:
+        L.append("")
     short = [r["case"] for r in runs if r.get("tstop") is not None and r["tstop"] < 59.9]
     if short:
         L.append(f"**Short runs: {', '.join(short)} ended at {', '.join(fmt(r['tstop'], 1) for r in runs if r['case'] in short)} ms "
