@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The one writer of the example decks in decks/examples/<case>/ (starter <case>_0000.rad
 and engine <case>_0001.rad), used by every generator there (engine_tools, shell_tools,
-springs_tools, contact_*/make_deck.py).
+springs_tools, contact_*/make_deck.py,
+rigid_rwall_impact/make_deck.py).
 
 Starter cards are in Radioss block format as docs/deck-format.md lists them and as the C++
 deck writer (deck/src/deck_writer.cpp) writes them: integers right-aligned in 10 columns,
