@@ -179,7 +179,17 @@ Deck model_cards(const FeModel& m, const std::string& title) {
   // Contacts.
   for (const FeInterface& f : m.interfaces) {
     node_group(d, iface_group_id(f), "secondary nodes " + f.name, f.secondary);
-    {
+    if (!f.main_parts.empty()) {
+      // Main surface of whole shell parts: the engine (as Radioss) takes a shell part's
+      // elements as two-sided segments even where they lie on solid faces.
+      CardBuilder s(d, "/SURF/PART", surf_id(f), "main surface " + f.name);
+      std::size_t r = s.add_row();
+      for (std::size_t i = 0; i < f.main_parts.size(); ++i) {
+        if (i > 0 && i % 10 == 0) r = s.add_row();
+        s.row_set_int(r, "id" + std::to_string(i % 10 + 1), m.parts[static_cast<std::size_t>(f.main_parts[i])].id);
+      }
+      s.commit();
+    } else {
       CardBuilder s(d, "/SURF/SEG", surf_id(f), "main surface " + f.name);
       for (const auto& q : f.main_segments) {
         std::size_t r = s.add_row();

@@ -64,6 +64,7 @@ struct FeInterface {
   std::string name;
   std::vector<int> secondary;      // node indices
   std::vector<std::array<int, 4>> main_segments;  // node indices (n4 == n3 for triangles)
+  std::vector<int> main_parts;     // part indices: main surface /SURF/PART instead of segments
   double gap = 0, stiffness_factor = 0, friction = 0, search = 0;
 };
 
