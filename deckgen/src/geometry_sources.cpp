@@ -9,6 +9,18 @@
 
 namespace hbm::deckgen {
 
+namespace {
+
+// Level name such as "C7" or "T12". Built by appending: GCC 12 reports a false -Wrestrict
+// on "T" + std::to_string(i) (the prepend of the literal into the temporary).
+std::string level_name(char region, int i) {
+  std::string name(1, region);
+  name += std::to_string(i);
+  return name;
+}
+
+}  // namespace
+
 TrunkSection SectionTable::at(double z) const {
   if (z <= rows.front().z) return rows.front();
   if (z >= rows.back().z) return rows.back();
@@ -37,9 +49,9 @@ std::vector<VertebraLandmarks> read_spine(const std::filesystem::path& file) {
   std::vector<VertebraLandmarks> out;
   static const std::vector<std::string> expected = [] {
     std::vector<std::string> v;
-    for (int i = 1; i <= 7; ++i) v.push_back("C" + std::to_string(i));
-    for (int i = 1; i <= 12; ++i) v.push_back("T" + std::to_string(i));
-    for (int i = 1; i <= 5; ++i) v.push_back("L" + std::to_string(i));
+    for (int i = 1; i <= 7; ++i) v.push_back(level_name('C', i));
+    for (int i = 1; i <= 12; ++i) v.push_back(level_name('T', i));
+    for (int i = 1; i <= 5; ++i) v.push_back(level_name('L', i));
     v.push_back("S1");
     return v;
   }();
@@ -94,7 +106,8 @@ std::vector<RibSpec> read_ribs(const std::filesystem::path& file) {
     s.index = t.integer(r, "rib");
     if (s.index != static_cast<int>(out.size()) + 1) t.fail(r, "rib", "ribs must be numbered 1..12 in order");
     s.vertebra = t.text(r, "vertebra");
-    if (s.vertebra != "T" + std::to_string(s.index)) t.fail(r, "vertebra", "rib " + std::to_string(s.index) + " attaches to T" + std::to_string(s.index));
+    const std::string thoracic = level_name('T', s.index);
+    if (s.vertebra != thoracic) t.fail(r, "vertebra", "rib " + std::to_string(s.index) + " attaches to " + thoracic);
     s.inclination_deg = t.number_in(r, "inclination_deg", 0, 45);
     s.end_fraction = t.number_in(r, "end_fraction", 0.2, 0.95);
     std::string c = t.text(r, "cartilage");

@@ -20,6 +20,14 @@ namespace hbm::deckgen {
 
 namespace {
 
+// Level name such as "C7" or "T12". Built by appending: GCC 12 reports a false -Wrestrict
+// on "T" + std::to_string(i) (the prepend of the literal into the temporary).
+std::string level_name(char region, int i) {
+  std::string name(1, region);
+  name += std::to_string(i);
+  return name;
+}
+
 class CapturingHandler : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
@@ -55,9 +63,9 @@ Eigen::Isometry3d to_iso(const urdf::Pose& p) {
 const std::vector<std::string>& Skeleton::required_links() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v{"pelvis", "head"};
-    for (int i = 1; i <= 7; ++i) v.push_back("C" + std::to_string(i));
-    for (int i = 1; i <= 12; ++i) v.push_back("T" + std::to_string(i));
-    for (int i = 1; i <= 5; ++i) v.push_back("L" + std::to_string(i));
+    for (int i = 1; i <= 7; ++i) v.push_back(level_name('C', i));
+    for (int i = 1; i <= 12; ++i) v.push_back(level_name('T', i));
+    for (int i = 1; i <= 5; ++i) v.push_back(level_name('L', i));
     for (const char* s : {"_r", "_l"})
       for (const char* b : {"clavicle", "scapula", "humerus", "forearm", "femur", "tibia"})
         v.push_back(std::string(b) + s);
@@ -91,7 +99,12 @@ Skeleton Skeleton::read(const std::filesystem::path& urdf_path) {
       std::size_t q = m.find('[');
       if (q != std::string::npos) {
         std::size_t e = m.find(']', q);
-        if (e != std::string::npos) line = line_of(text, "\"" + m.substr(q + 1, e - q - 1) + "\"");
+        if (e != std::string::npos) {
+          std::string quoted(1, '"');  // appended in steps (GCC 12 false -Wrestrict on "\"" + ...)
+          quoted += m.substr(q + 1, e - q - 1);
+          quoted += '"';
+          line = line_of(text, quoted);
+        }
       }
     }
     throw SourceError(urdf_path, line, "urdf", msg);
@@ -133,13 +146,15 @@ Skeleton Skeleton::read(const std::filesystem::path& urdf_path) {
         throw SourceError(urdf_path, s.joint_line, "type", "joint " + j->name + ": only revolute and fixed joints are supported");
       }
     }
-    if (auto in = l->inertial) {
+    if (auto inertial = l->inertial) {
       s.has_inertial = true;
-      s.mass = in->mass;
-      Eigen::Isometry3d io = frame * to_iso(in->origin);
+      s.mass = inertial->mass;
+      Eigen::Isometry3d io = frame * to_iso(inertial->origin);
       s.cog = io.translation();
       Eigen::Matrix3d I;
-      I << in->ixx, in->ixy, in->ixz, in->ixy, in->iyy, in->iyz, in->ixz, in->iyz, in->izz;
+      I << inertial->ixx, inertial->ixy, inertial->ixz,  //
+          inertial->ixy, inertial->iyy, inertial->iyz,     //
+          inertial->ixz, inertial->iyz, inertial->izz;
       s.inertia = io.linear() * (I * 1e6) * io.linear().transpose();
       int il = line_of(text, "<inertial>", text.find("<link name=\"" + l->name + "\""));
       if (!(s.mass > 0)) throw SourceError(urdf_path, il ? il : s.line, "mass", "link " + l->name + ": mass must be > 0");

@@ -218,7 +218,10 @@ void BuildContext::add_constraint(std::unique_ptr<Constraint> c) { model_.constr
 
 static std::string card_name(const hbm::deck::Card& card) {
   std::string s(card.keyword());
-  if (card.id != 0) s += "/" + std::to_string(card.id);
+  if (card.id != 0) {  // appended in steps: GCC 12 reports a false -Wrestrict on "/" + std::to_string(..)
+    s += '/';
+    s += std::to_string(card.id);
+  }
   return s;
 }
 
