@@ -6,8 +6,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact_tools"))
-import radioss_deck as rd  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "deck_tools"))
+from radioss_deck import ANIM_CONTACT, Deck  # noqa: E402
 
 NAME = "contact_sphere_rwall"
 R, RHO, E, NU, V0 = 10.0, 1.0e-6, 0.01, 0.3, 1.0   # mm, kg/mm^3, GPa, -, mm/ms
@@ -100,25 +100,24 @@ def sphere_mesh():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     nodes, hexes = sphere_mesh()
     z0 = R + 0.01  # lowest point 0.01 mm above the wall
     nodes = [(n, x, y, z + z0) for n, x, y, z in nodes]
     centre = min(nodes, key=lambda n: n[1] ** 2 + n[2] ** 2 + (n[3] - z0) ** 2)[0]
-    s = rd.Starter(NAME, HEADER)
-    s.nodes(nodes)
-    s.bricks(1, [(e + 1, h) for e, h in enumerate(hexes)])
-    s.part(1, "sphere", 1, 1)
-    s.prop_solid(1, "bricks")
-    s.law1(1, "soft elastic", RHO, E, NU)
-    s.grnod_part(1, "sphere nodes", [1])
-    s.rwall_plane(1, "ground", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), slide=0, grnod1=1)
-    s.inivel(1, "drop", (0.0, 0.0, -V0), 1)
-    s.th("RWALL", 1, "wall force", ["DEF"], [1])
-    s.th_nodes(2, "centre", ["VZ", "DZ"], [(centre, "centre")])
-    s.write(os.path.join(here, f"{NAME}_0000.rad"))
-    rd.write_atomic(os.path.join(here, f"{NAME}_0001.rad"),
-                    rd.engine(NAME, HEADER[:1], tstop=1.4, dt_his=0.002, anim_dt=0.1))
+    d = Deck(NAME, HEADER)
+    for n, x, y, z in nodes:
+        d.node(x, y, z, n)
+    d.bricks(1, [(e + 1, h) for e, h in enumerate(hexes)])
+    d.part(1, "sphere", 1, 1)
+    d.prop_solid(1, "bricks")
+    d.law1(1, "soft elastic", RHO, E, NU)
+    d.grnod_part(1, "sphere nodes", [1])
+    d.rwall_plane(1, "ground", (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), slide=0, grnod1=1)
+    d.inivel(1, "drop", (0.0, 0.0, -V0), 1)
+    d.th("RWALL", 1, "wall force", ["DEF"], [1])
+    d.th_nodes(2, "centre", ["VZ", "DZ"], [(centre, "centre")])
+    d.engine(1.4, 0.002, anim=0.1, anim_outputs=ANIM_CONTACT)
+    d.write()
     print(f"{len(nodes)} nodes, {len(hexes)} bricks; Hertz F_max {FMAX:.6g} kN, delta {DMAX:.4g} mm, t_c {TC:.4g} ms")
 
 
