@@ -3,10 +3,12 @@
 // material LAW1/2/34/36 from the part, hourglass and bulk viscosity from /PROP/TYPE14.
 // Lumped mass rho V0 / n per element node. Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
+#include "solid/brick_ha8_group.hpp"
 #include "solid/solid_group.hpp"
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace hbm::solver {
@@ -101,16 +103,83 @@ bool read_solid_property(BuildContext& ctx, const Part& part, SolidGroup& g) {
     case 0: break;
     case 1: g.hourglass = HourglassForm::Viscous; break;
     case 2: g.hourglass = HourglassForm::Stiffness; break;
+    case 14: break;  // bricks: BrickHa8Group (is_ha8); tetras: constant strain, no hourglass
     case 24: g.hourglass = HourglassForm::Physical; break;
     default:
       ctx.error(*p, p->lines.at(0), "Isolid",
-                "Isolid = " + std::to_string(isolid) + " not supported (0, 1 viscous, 2 stiffness, 24 physical)");
+                "Isolid = " + std::to_string(isolid) +
+                    " not supported (0, 1 viscous, 2 stiffness, 14 HA8 full integration, 24 physical)");
       return false;
   }
   g.icpre = static_cast<int>(p->integer(0, "Icpre"));
   g.qa = p->real(1, "qa");
   g.qb = p->real(1, "qb");
   g.hourglass_coef = p->real(1, "h");
+  return true;
+}
+
+// Elements of one part into group g (SolidGroup or BrickHa8Group): connectivity, V0 and
+// mass, lumped nodal masses rho V0 / n; the group is added to the model.
+template <class Group>
+void fill_group(BuildContext& ctx, std::string_view kw, Index part,
+                const std::vector<const hbm::deck::Card*>& cards, std::unique_ptr<Group> g) {
+  const int npe = kw == "/BRICK" ? 8 : 4;
+  g->keyword = std::string(kw);
+  g->part = part;
+  g->nodes_per_element = static_cast<std::size_t>(npe);
+  bool ok = true;
+  for (const hbm::deck::Card* c : cards)
+    for (std::size_t r = 0; r < c->n_rows(); ++r) {
+      const auto& row = c->row(r);
+      g->element_id.push_back(c->integer(row, "id"));
+      for (int i = 0; i < npe; ++i) {
+        const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
+        ok = ok && n != kNoIndex;
+        g->connectivity.push_back(n);
+      }
+    }
+  if (!ok) return;
+  g->n_elements = g->element_id.size();
+  const Index bad = g->initialize(ctx.nodes());
+  if (bad != kNoIndex) {
+    ctx.error(*cards.front(), "element " + std::to_string(g->element_id[static_cast<std::size_t>(bad)]) +
+                                  " has a non-positive volume (node order?)");
+    return;
+  }
+  double part_mass = 0.0;
+  for (std::size_t e = 0; e < g->n_elements; ++e) {
+    part_mass += g->mass[e];
+    for (int i = 0; i < npe; ++i) ctx.add_nodal_mass(g->connectivity[e * npe + i], g->mass[e] / npe);
+  }
+  ctx.add_part_mass(part, part_mass);
+  ctx.add_group(std::move(g));
+}
+
+// Isolid 14 (HA8) on a /PROP/TYPE14 part: 2x2x2 Gauss bricks. Icpre 1 constant pressure
+// (mean dilatation), 0 pressure at the Gauss points too (locks as nu -> 1/2, as in
+// OpenRadioss); Inpts 222 only. False (error recorded) on unsupported fields.
+bool is_ha8(const Part& part) {
+  const hbm::deck::Card* p = part.prop_card;
+  return p && p->keyword() == "/PROP/TYPE14" && p->integer(0, "Isolid") == 14;
+}
+
+bool read_ha8_property(BuildContext& ctx, const Part& part, BrickHa8Group& g) {
+  const hbm::deck::Card& p = *part.prop_card;
+  const auto icpre = p.integer(0, "Icpre");
+  if (icpre != 0 && icpre != 1) {
+    ctx.error(p, p.lines.at(0), "Icpre",
+              "Icpre = " + std::to_string(icpre) + " not supported with Isolid 14 (0 or 1)");
+    return false;
+  }
+  g.constant_pressure = icpre == 1;
+  const auto inpts = p.integer(0, "Inpts");
+  if (inpts != 0 && inpts != 222) {
+    ctx.error(p, p.lines.at(0), "Inpts",
+              "Inpts = " + std::to_string(inpts) + " not supported with Isolid 14 (222: 2x2x2 Gauss)");
+    return false;
+  }
+  g.qa = p.real(1, "qa");
+  g.qb = p.real(1, "qb");
   return true;
 }
 
@@ -134,39 +203,18 @@ void build_solid_groups(BuildContext& ctx) {
         ctx.error(*cards.front(), "no part " + std::to_string(part_id));
         continue;
       }
-      auto g = std::make_unique<SolidGroup>();
-      g->keyword = std::string(kw);
-      g->part = part;
-      g->nodes_per_element = static_cast<std::size_t>(npe);
       const Part& p = ctx.part(part);
-      if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
-      if (!read_solid_property(ctx, p, *g)) continue;
-      bool ok = true;
-      for (const hbm::deck::Card* c : cards)
-        for (std::size_t r = 0; r < c->n_rows(); ++r) {
-          const auto& row = c->row(r);
-          g->element_id.push_back(c->integer(row, "id"));
-          for (int i = 0; i < npe; ++i) {
-            const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
-            ok = ok && n != kNoIndex;
-            g->connectivity.push_back(n);
-          }
-        }
-      if (!ok) continue;
-      g->n_elements = g->element_id.size();
-      const Index bad = g->initialize(ctx.nodes());
-      if (bad != kNoIndex) {
-        ctx.error(*cards.front(), "element " + std::to_string(g->element_id[static_cast<std::size_t>(bad)]) +
-                                      " has a non-positive volume (node order?)");
+      if (npe == 8 && is_ha8(p)) {
+        auto h = std::make_unique<BrickHa8Group>();
+        if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, h->material)) continue;
+        if (!read_ha8_property(ctx, p, *h)) continue;
+        fill_group(ctx, kw, part, cards, std::move(h));
         continue;
       }
-      double part_mass = 0.0;
-      for (std::size_t e = 0; e < g->n_elements; ++e) {
-        part_mass += g->mass[e];
-        for (int i = 0; i < npe; ++i) ctx.add_nodal_mass(g->connectivity[e * npe + i], g->mass[e] / npe);
-      }
-      ctx.add_part_mass(part, part_mass);
-      ctx.add_group(std::move(g));
+      auto g = std::make_unique<SolidGroup>();
+      if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
+      if (!read_solid_property(ctx, p, *g)) continue;
+      fill_group(ctx, kw, part, cards, std::move(g));
     }
   }
 }

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Verification of the HA8 brick (Isolid 14, 2x2x2 Gauss, constant pressure Icpre 1):
+//  - patch tests on a distorted 3 x 3 x 3 block: a linear velocity field gives the same
+//    stress at every Gauss point and zero force at every interior node; for the body
+//    model's flesh (LAW34, K/G0 = 25 000) simple shear follows the hereditary integral
+//    s_xz(t) = Ginf g + (G0 - Ginf) gdot (1 - e^{-beta t}) / beta exactly with p = 0, and
+//    uniform compression gives p = -K ln J (hypoelastic bulk);
+//  - cantilever (plane strain, 4 bricks through the thickness) against Euler-Bernoulli,
+//    f1 = (1.8751^2 / 2 pi) sqrt(E' I / (rho A L^4)), E' = E / (1 - nu^2): no hourglass
+//    force exists, the hourglass energy is 0, energy is conserved;
+//  - nu = 0.4999: constant pressure does not lock (same ratio to the beam), the Gauss-point
+//    pressure (Icpre 0) does;
+//  - 1 vs 2 threads: bitwise identical forces and stresses.
+#include "hbm/solver/cycle.hpp"
+#include "loads/loads.hpp"
+#include "solid/brick_block.hpp"
+#include "solid/brick_ha8_group.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <numbers>
+#include <vector>
+
+namespace hbm::solver {
+namespace {
+
+// Structured block (brick_block) with its group replaced by an HA8 group on the same
+// connectivity; `distort` moves interior nodes before V0 and masses are computed.
+BrickHa8Group& make_ha8_block(Model& m, const BrickBlock& b, bool distort = false) {
+  SolidGroup& one = make_brick_block(m, b);
+  auto g = std::make_unique<BrickHa8Group>();
+  g->keyword = "/BRICK";
+  g->part = 0;
+  g->nodes_per_element = 8;
+  g->material = b.material;
+  g->connectivity = one.connectivity;
+  g->element_id = one.element_id;
+  g->n_elements = one.n_elements;
+  if (distort)
+    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+      const double x = m.nodes.x.x[i], y = m.nodes.x.y[i], z = m.nodes.x.z[i];
+      const double t = 1e-6 * (b.lx + b.ly + b.lz);
+      if (x > t && x < b.lx - t && y > t && y < b.ly - t && z > t && z < b.lz - t) {
+        m.nodes.x.x[i] += 2.0 * std::sin(0.3 * static_cast<double>(i));
+        m.nodes.x.y[i] += 1.5 * std::cos(0.7 * static_cast<double>(i));
+        m.nodes.x.z[i] -= 1.8 * std::sin(1.1 * static_cast<double>(i));
+      }
+    }
+  m.nodes.x0 = m.nodes.x;
+  EXPECT_EQ(g->initialize(m.nodes), kNoIndex);
+  std::fill(m.nodes.mass0.begin(), m.nodes.mass0.end(), 0.0);
+  for (std::size_t e = 0; e < g->n_elements; ++e)
+    for (int a = 0; a < 8; ++a) m.nodes.mass0[static_cast<std::size_t>(g->connectivity[e * 8 + a])] += g->mass[e] / 8;
+  m.nodes.mass = m.nodes.mass0;
+  BrickHa8Group& ref = *g;
+  m.groups[0] = std::move(g);
+  build_incidence(m);
+  return ref;
+}
+
+SolidMaterial flesh() {
+  SolidMaterial mat;
+  mat.rho = 1.02e-6;
+  mat.law = SolidLaw::Viscoelastic;
+  mat.set_viscoelastic(0.12875, 5.15e-6, 1.5e-6, 0.1);  // K, G0, Ginf [GPa], beta 100 /s
+  return mat;
+}
+
+// Largest net force on an interior node of the 30 mm block.
+double max_interior_force(const Model& m, const BrickHa8Group& g) {
+  std::vector<double> fx(m.nodes.n_nodes, 0.0), fy = fx, fz = fx;
+  for (std::size_t sl = 0; sl < g.connectivity.size(); ++sl) {
+    const auto n = static_cast<std::size_t>(g.connectivity[sl]);
+    fx[n] += g.slot_force.x[sl];
+    fy[n] += g.slot_force.y[sl];
+    fz[n] += g.slot_force.z[sl];
+  }
+  double f = 0.0;
+  for (std::size_t i = 0; i < fx.size(); ++i) {
+    const double x = m.nodes.x0.x[i], y = m.nodes.x0.y[i], z = m.nodes.x0.z[i];
+    if (x > 1 && x < 29 && y > 1 && y < 29 && z > 1 && z < 29)
+      f = std::max(f, std::sqrt(fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]));
+  }
+  return f;
+}
+
+BrickBlock patch_block(const SolidMaterial& mat) {
+  BrickBlock b;
+  b.nx = b.ny = b.nz = 3;
+  b.lx = b.ly = b.lz = 30;
+  b.material = mat;
+  return b;
+}
+
+// Drive the block with v = A (x - 15) (A fixed) for n steps of dt.
+void drive_linear(Model& m, BrickHa8Group& g, const double A[3][3], double dt, int n) {
+  NodalState& s = m.nodes;
+  StepContext step;
+  GroupStepResult res;
+  for (int k = 0; k <= n; ++k) {
+    for (std::size_t i = 0; i < s.n_nodes; ++i) {
+      const double r[3] = {s.x.x[i] - 15.0, s.x.y[i] - 15.0, s.x.z[i] - 15.0};
+      s.v.x[i] = A[0][0] * r[0] + A[0][1] * r[1] + A[0][2] * r[2];
+      s.v.y[i] = A[1][0] * r[0] + A[1][1] * r[1] + A[1][2] * r[2];
+      s.v.z[i] = A[2][0] * r[0] + A[2][1] * r[1] + A[2][2] * r[2];
+    }
+    if (k > 0) {
+      for (std::size_t i = 0; i < s.n_nodes; ++i) {
+        s.x.x[i] += dt * s.v.x[i];
+        s.x.y[i] += dt * s.v.y[i];
+        s.x.z[i] += dt * s.v.z[i];
+      }
+      step.dt_prev = dt;
+      step.time += dt;
+    }
+    g.compute_forces(step, s, res);
+  }
+}
+
+TEST(SolidHa8Patch, LinearFieldGivesUniformStressAndInteriorEquilibrium) {
+  Model m;
+  SolidMaterial mat;
+  mat.rho = 7.8e-6;
+  mat.set_elastic(210.0, 0.3);
+  BrickHa8Group& g = make_ha8_block(m, patch_block(mat), true);
+  const double A[3][3] = {{1e-3, 4e-4, -2e-4}, {-3e-4, -5e-4, 6e-4}, {2e-4, 1e-4, 7e-4}};
+  drive_linear(m, g, A, 1e-3, 200);
+  double ref[6];
+  g.point_stress(0, 0, ref);
+  double scale = 0.0;
+  for (double v : ref) scale = std::max(scale, std::abs(v));
+  ASSERT_GT(scale, 1e-3);
+  for (std::size_t e = 0; e < g.n_elements; ++e)
+    for (int p = 0; p < BrickHa8Group::kPoints; ++p) {
+      double s[6];
+      g.point_stress(e, p, s);
+      for (int k = 0; k < 6; ++k) EXPECT_NEAR(s[k], ref[k], 1e-9 * scale) << "element " << e << " point " << p;
+    }
+  EXPECT_LT(max_interior_force(m, g), 1e-10 * scale * 100.0);
+  EXPECT_EQ(g.energy.hourglass, 0.0);
+}
+
+TEST(SolidHa8Patch, FleshShearFollowsLaw34WithoutPressure) {
+  Model m;
+  BrickHa8Group& g = make_ha8_block(m, patch_block(flesh()), true);
+  const double gdot = 1e-3, dt = 1e-3;  // 0.01 engineering shear at 10 ms
+  const int n = 10000;
+  const double A[3][3] = {{0, 0, gdot}, {0, 0, 0}, {0, 0, 0}};
+  drive_linear(m, g, A, dt, n);
+  const SolidMaterial& mat = g.material;
+  const double t = n * dt, beta = mat.beta;
+  const double expect = mat.Ginf * gdot * t + (mat.G0 - mat.Ginf) * gdot * (1.0 - std::exp(-beta * t)) / beta;
+  for (std::size_t e = 0; e < g.n_elements; ++e)
+    for (int p = 0; p < BrickHa8Group::kPoints; ++p) {
+      double s[6];
+      g.point_stress(e, p, s);
+      EXPECT_NEAR(s[5], expect, 1e-3 * expect) << "element " << e << " point " << p;
+      EXPECT_NEAR((s[0] + s[1] + s[2]) / 3.0, 0.0, 1e-4 * expect) << "element " << e;
+    }
+  EXPECT_LT(max_interior_force(m, g), 1e-7 * expect * 100.0);
+}
+
+TEST(SolidHa8Patch, FleshCompressionGivesBulkPressure) {
+  Model m;
+  BrickHa8Group& g = make_ha8_block(m, patch_block(flesh()), true);
+  g.qa = g.qb = 0.0;
+  const double edot = 1e-3, dt = 1e-3;
+  const int n = 1000;
+  const double A[3][3] = {{-edot, 0, 0}, {0, -edot, 0}, {0, 0, -edot}};
+  // Each step moves x by dt A (x - 15): the volume ratio is (1 - edot dt)^(3n).
+  drive_linear(m, g, A, dt, n);
+  const double lnJ = 3.0 * n * std::log(1.0 - edot * dt);
+  const double p_expect = -g.material.K * lnJ;
+  for (std::size_t e = 0; e < g.n_elements; ++e)
+    for (int p = 0; p < BrickHa8Group::kPoints; ++p) {
+      double sg[6];
+      g.point_stress(e, p, sg);
+      EXPECT_NEAR(-(sg[0] + sg[1] + sg[2]) / 3.0, p_expect, 1e-6 * p_expect) << "element " << e;
+      EXPECT_NEAR(sg[3], 0.0, 1e-9 * p_expect);
+    }
+  EXPECT_LT(max_interior_force(m, g), 1e-7 * p_expect * 100.0);
+}
+
+struct BendingResult {
+  double f_fem = 0, f_beam = 0, energy_error = 0, hourglass = 0;
+};
+
+// Cantilever along x, L = 80, h = 10 (z), width 10 (y), nx x 1 x nz bricks, clamped at
+// x = 0, y fixed everywhere (plane strain); initial velocity in the first beam mode.
+BendingResult cantilever(double nu, bool constant_pressure, int nx, int nz) {
+  Model m;
+  BrickBlock b;
+  b.nx = nx;
+  b.ny = 1;
+  b.nz = nz;
+  b.lx = 80;
+  b.ly = 10;
+  b.lz = 10;
+  b.material.rho = 1e-6;
+  b.material.set_elastic(0.2, nu);
+  BrickHa8Group& g = make_ha8_block(m, b);
+  g.constant_pressure = constant_pressure;
+  g.qa = g.qb = 0.0;  // undamped
+  auto clamp = std::make_unique<FixedDofs>();
+  clamp->fixed = {true, true, true, false, false, false};
+  auto plane = std::make_unique<FixedDofs>();
+  plane->fixed = {false, true, false, false, false, false};
+  std::size_t tip = 0;
+  const double L = b.lx, beta = 1.8751 / L, sigma = 0.7341, v0 = 1e-3;
+  auto phi = [&](double x) {
+    const double s = beta * x;
+    return std::cosh(s) - std::cos(s) - sigma * (std::sinh(s) - std::sin(s));
+  };
+  const double phi_tip = phi(L);
+  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+    const double x = m.nodes.x.x[i];
+    if (x < 1e-9) clamp->nodes.push_back(static_cast<Index>(i));
+    plane->nodes.push_back(static_cast<Index>(i));
+    m.nodes.v.z[i] = v0 * phi(x) / phi_tip;
+    // Tip: node at x = L, y = 0 nearest to the beam axis z = 5.
+    if (x > L - 1e-9 && m.nodes.x.y[i] < 1e-9 &&
+        (m.nodes.x.x[tip] < L - 1e-9 || std::abs(m.nodes.x.z[i] - 5.0) < std::abs(m.nodes.x.z[tip] - 5.0)))
+      tip = i;
+  }
+  m.constraints.push_back(std::move(clamp));
+  m.constraints.push_back(std::move(plane));
+  m.control.dt_scale = 0.9;
+  BendingResult r;
+  const double E1 = 0.2 / (1.0 - nu * nu), h = b.lz;
+  r.f_beam = 1.8751 * 1.8751 / (2.0 * std::numbers::pi) * std::sqrt(E1 * h * h / (12.0 * b.material.rho * std::pow(L, 4)));
+  CycleState c;
+  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i)
+    c.energies.initial_total += 0.5 * m.nodes.mass[i] * m.nodes.v.z[i] * m.nodes.v.z[i];
+  std::vector<double> down;
+  double z_prev = 0.0, t_prev = 0.0;
+  const double t_end = 4.0 / r.f_beam;
+  while (c.step.time < t_end) {
+    run_cycle(m, c);
+    const double zt = m.nodes.x.z[tip] - m.nodes.x0.z[tip];
+    const double t = c.step.time;
+    if (z_prev > 0.0 && zt <= 0.0) down.push_back(t_prev + (t - t_prev) * z_prev / (z_prev - zt));
+    z_prev = zt;
+    t_prev = t;
+    if (c.stop != StopReason::None || down.size() >= 2) break;
+  }
+  r.f_fem = down.size() >= 2 ? 1.0 / (down[1] - down[0]) : 0.0;
+  r.energy_error = c.energies.energy_error();
+  r.hourglass = c.energies.hourglass;
+  std::printf("HA8 nu %.4f Icpre %d mesh %dx1x%d: f %.5f beam %.5f ratio %.4f energy error %.2e cycles %lld\n", nu,
+              constant_pressure ? 1 : 0, nx, nz, r.f_fem, r.f_beam, r.f_fem / r.f_beam, r.energy_error,
+              static_cast<long long>(c.step.cycle));
+  return r;
+}
+
+TEST(SolidHa8Bending, CantileverMatchesBeamTheoryWithoutHourglass) {
+  const BendingResult r = cantilever(0.3, true, 16, 4);
+  EXPECT_NEAR(r.f_fem / r.f_beam, 1.0, 0.05) << "f " << r.f_fem << " beam " << r.f_beam;
+  EXPECT_LT(std::abs(r.energy_error), 1e-6);
+  EXPECT_EQ(r.hourglass, 0.0);
+}
+
+TEST(SolidHa8Bending, NearlyIncompressibleDoesNotLock) {
+  const BendingResult a = cantilever(0.3, true, 16, 4);
+  const BendingResult b = cantilever(0.4999, true, 16, 4);
+  // Same ratio to the (E' scaled) beam value as the compressible material.
+  EXPECT_NEAR((b.f_fem / b.f_beam) / (a.f_fem / a.f_beam), 1.0, 0.03)
+      << "nu 0.4999 ratio " << b.f_fem / b.f_beam << " nu 0.3 ratio " << a.f_fem / a.f_beam;
+  EXPECT_LT(std::abs(b.energy_error), 1e-6);
+}
+
+TEST(SolidHa8Bending, GaussPointPressureLocks) {
+  // Icpre 0 (pressure at the 8 points): plane-strain volumetric locking as nu -> 1/2.
+  const BendingResult b = cantilever(0.4999, false, 16, 4);
+  EXPECT_GT(b.f_fem / b.f_beam, 1.5) << "f " << b.f_fem << " beam " << b.f_beam;
+}
+
+TEST(SolidHa8Threads, OneAndTwoThreadsBitwiseIdentical) {
+  auto run = [](int threads, std::vector<double>& out) {
+    omp_set_num_threads(threads);
+    Model m;
+    BrickBlock b;
+    b.nx = 16;
+    b.ny = 16;
+    b.nz = 8;  // 2048 elements: 16 chunks, parallel
+    b.lx = b.ly = 30;
+    b.lz = 15;
+    b.material = flesh();
+    BrickHa8Group& g = make_ha8_block(m, b);
+    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+      m.nodes.v.x[i] = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+      m.nodes.v.y[i] = 1e-3 * std::cos(0.23 * static_cast<double>(i));
+      m.nodes.v.z[i] = -2e-3 * std::sin(0.11 * static_cast<double>(i));
+    }
+    CycleState c;
+    for (int k = 0; k < 200; ++k) run_cycle(m, c);
+    out.clear();
+    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+      out.push_back(m.nodes.x.x[i]);
+      out.push_back(m.nodes.v.z[i]);
+    }
+    out.insert(out.end(), g.sig.begin(), g.sig.end());
+    out.push_back(c.energies.internal);
+  };
+  std::vector<double> a, b;
+  run(1, a);
+  run(2, b);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+}
+
+}  // namespace
+}  // namespace hbm::solver
