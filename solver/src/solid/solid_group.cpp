@@ -42,6 +42,7 @@ inline void tetra_volume_gradient(const double* x, const double* y, const double
 inline void physical_hourglass(const double u[3][4], const double a[3], double G, double V,
                                double c1, double c2, double c3, double dQ[3][4]) {
   const double s = G * V / (3.0 * 64.0);
+#pragma GCC unroll 3
   for (int m = 0; m < 3; ++m) {
     const int p = (m + 1) % 3, r = (m + 2) % 3;
     const double A = u[p][r] / a[p], B = u[r][p] / a[r];
@@ -58,9 +59,108 @@ inline void physical_hourglass(const double u[3][4], const double a[3], double G
   const double i0 = 1.0 / (a[0] * a[0]), i1 = 1.0 / (a[1] * a[1]), i2 = 1.0 / (a[2] * a[2]);
   const double sum = i0 + i1 + i2;
   const double inv[3] = {i0, i1, i2};
+#pragma GCC unroll 3
   for (int i = 0; i < 3; ++i) dQ[i][3] += s4 * (sum + (c3 - 1.0) * inv[i]) * u[i][3];
 }
 
+
+// Lanes of one chunk of bricks: every array is [component][lane] (or [lane]), so each stage
+// of the kernel is a loop over the lanes that the compiler vectorises. One instance per
+// thread (thread_local): about 230 KB, too large for an OpenMP worker's stack.
+struct BrickLanes {
+  static constexpr std::size_t W = kChunk;
+  alignas(64) double x[8][W], y[8][W], z[8][W], vx[8][W], vy[8][W], vz[8][W];
+  alignas(64) double bx[8][W], by[8][W], bz[8][W];   // volume gradient, current configuration
+  alignas(64) double mx[8][W], my[8][W], mz[8][W];   // volume gradient, mid-step configuration
+  alignas(64) double fx[8][W], fy[8][W], fz[8][W];   // nodal forces (first: mid-step coordinates)
+  alignas(64) double gam[4][8][W];                   // FB hourglass projection gamma_alpha,I
+  alignas(64) double qx[4][W], qy[4][W], qz[4][W];   // hourglass velocities q_alpha
+  alignas(64) double Qx[4][W], Qy[4][W], Qz[4][W];   // hourglass forces Q_alpha
+  alignas(64) double hg[12][W], hgv[12][W];          // stored Q (and Physical: viscous part)
+  alignas(64) double L[9][W], d[6][W], w[3][W];      // velocity gradient, D, spin (wxy wyz wzx)
+  alignas(64) double sig[6][W], hist[6][W], s_new[6][W];
+  alignas(64) double V[W], Vm[W], amax2[W], amid2[W], ok[W], mass[W], rho[W], c[W], v23[W];
+  alignas(64) double q[W], qv[W], q_old[W], e_int[W], de[W], p_int[W], p_hg[W], dte[W], lc[W], tmp[W];
+  alignas(64) double g[9][W], half[3][W], n2[W];     // Physical: centre Jacobian, frame
+};
+
+
+// Physical hourglass (Isolid 24) over the lanes: corotational frame R from the centre
+// Jacobian columns g_j = sum_I xi_jI x_I / 8 (Gram-Schmidt), increment dQ of the box
+// closed form (physical_hourglass) in that frame, Q kept in the global frame and turned
+// with the element spin W (Jaumann, like the stress): Q += dt W Q + R^T dQ. The frame only
+// orients the increment, so a badly distorted element whose frame jumps cannot turn the
+// stored hourglass force. Plus the small viscous part (global frame) with coefficient
+// cvf rho c V^(2/3). Writes Q, the elastic work to p_int (strain energy of the assumed
+// hourglass strain field: internal energy, as in OpenRadioss Isolid 24) and the viscous
+// work (artificial dissipation) to p_hg.
+void physical_hourglass_lanes(BrickLanes& b, std::size_t n, double dt, double G,
+                              const SolidGroup::HourglassCoefficients& hc, double cvf) {
+  for (std::size_t l = 0; l < n; ++l) {
+    double g00 = 0, g01 = 0, g02 = 0, g10 = 0, g11 = 0, g12 = 0, g20 = 0, g21 = 0, g22 = 0;
+    for (int i = 0; i < 8; ++i) {
+      g00 += brick::kXi[i] * b.x[i][l]; g01 += brick::kXi[i] * b.y[i][l]; g02 += brick::kXi[i] * b.z[i][l];
+      g10 += brick::kEta[i] * b.x[i][l]; g11 += brick::kEta[i] * b.y[i][l]; g12 += brick::kEta[i] * b.z[i][l];
+      g20 += brick::kZeta[i] * b.x[i][l]; g21 += brick::kZeta[i] * b.y[i][l]; g22 += brick::kZeta[i] * b.z[i][l];
+    }
+    b.g[0][l] = g00; b.g[1][l] = g01; b.g[2][l] = g02;
+    b.g[3][l] = g10; b.g[4][l] = g11; b.g[5][l] = g12;
+    b.g[6][l] = g20; b.g[7][l] = g21; b.g[8][l] = g22;
+  }
+  for (int j = 0; j < 3; ++j)
+    for (std::size_t l = 0; l < n; ++l)
+      b.half[j][l] = 0.125 * std::sqrt(b.g[3 * j][l] * b.g[3 * j][l] + b.g[3 * j + 1][l] * b.g[3 * j + 1][l] +
+                                       b.g[3 * j + 2][l] * b.g[3 * j + 2][l]);
+  for (std::size_t l = 0; l < n; ++l) {
+    const double s = 8.0 * b.half[0][l];
+    const double r0 = b.g[0][l] / s, r1 = b.g[1][l] / s, r2 = b.g[2][l] / s;
+    const double proj = r0 * b.g[3][l] + r1 * b.g[4][l] + r2 * b.g[5][l];
+    const double e0 = b.g[3][l] - proj * r0, e1 = b.g[4][l] - proj * r1, e2 = b.g[5][l] - proj * r2;
+    b.g[0][l] = r0; b.g[1][l] = r1; b.g[2][l] = r2;   // first row of R
+    b.g[3][l] = e0; b.g[4][l] = e1; b.g[5][l] = e2;   // second direction, not normed
+    b.n2[l] = e0 * e0 + e1 * e1 + e2 * e2;
+  }
+  for (std::size_t l = 0; l < n; ++l) b.n2[l] = std::sqrt(b.n2[l]);
+  for (std::size_t l = 0; l < n; ++l) {
+    double R[3][3];
+    R[0][0] = b.g[0][l]; R[0][1] = b.g[1][l]; R[0][2] = b.g[2][l];
+    R[1][0] = b.g[3][l] / b.n2[l]; R[1][1] = b.g[4][l] / b.n2[l]; R[1][2] = b.g[5][l] / b.n2[l];
+    R[2][0] = R[0][1] * R[1][2] - R[0][2] * R[1][1];
+    R[2][1] = R[0][2] * R[1][0] - R[0][0] * R[1][2];
+    R[2][2] = R[0][0] * R[1][1] - R[0][1] * R[1][0];
+    double u[3][4], dQ[3][4] = {};
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i)
+#pragma GCC unroll 4
+      for (int a = 0; a < 4; ++a)
+        u[i][a] = (R[i][0] * b.qx[a][l] + R[i][1] * b.qy[a][l] + R[i][2] * b.qz[a][l]) * dt;
+    const double half[3] = {b.half[0][l], b.half[1][l], b.half[2][l]};
+    physical_hourglass(u, half, G, b.V[l], hc.c1, hc.c2, hc.c3, dQ);
+    const double wxy = b.w[0][l], wyz = b.w[1][l], wzx = b.w[2][l];
+    const double Wm[3][3] = {{0.0, wxy, -wzx}, {-wxy, 0.0, wyz}, {wzx, -wyz, 0.0}};
+    const double cv = cvf * b.rho[l] * b.c[l] * b.v23[l];
+    double p = 0.0, pv = 0.0;
+#pragma GCC unroll 4
+    for (int a = 0; a < 4; ++a) {
+      const double old[3] = {b.hg[a][l], b.hg[4 + a][l], b.hg[8 + a][l]};
+      const double qv[3] = {b.qx[a][l], b.qy[a][l], b.qz[a][l]};
+      double Qg[3];
+#pragma GCC unroll 3
+      for (int k = 0; k < 3; ++k) {
+        Qg[k] = old[k] + dt * (Wm[k][0] * old[0] + Wm[k][1] * old[1] + Wm[k][2] * old[2]) +
+                R[0][k] * dQ[0][a] + R[1][k] * dQ[1][a] + R[2][k] * dQ[2][a];
+        p += 0.5 * (old[k] + Qg[k]) * qv[k] * dt;
+      }
+      const double vx = cv * qv[0], vy = cv * qv[1], vz = cv * qv[2];
+      pv += 0.5 * ((b.hgv[a][l] + vx) * qv[0] + (b.hgv[4 + a][l] + vy) * qv[1] + (b.hgv[8 + a][l] + vz) * qv[2]);
+      b.hg[a][l] = Qg[0]; b.hg[4 + a][l] = Qg[1]; b.hg[8 + a][l] = Qg[2];
+      b.hgv[a][l] = vx; b.hgv[4 + a][l] = vy; b.hgv[8 + a][l] = vz;
+      b.Qx[a][l] = Qg[0] + vx; b.Qy[a][l] = Qg[1] + vy; b.Qz[a][l] = Qg[2] + vz;
+    }
+    b.p_int[l] = p;
+    b.p_hg[l] = pv * dt;
+  }
+}
 }  // namespace
 
 Index SolidGroup::initialize(const NodalState& nodes) {
@@ -148,10 +248,10 @@ void SolidGroup::cell_field(CellField field, std::span<double> out) const {
   }
 }
 
-template <int NPE>
-void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
-                               double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
-                               Index& inverted) {
+// One chunk of 4-node tetrahedra, element by element.
+void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
+                                     double& e_int_inc, double& dt_min, Index& dt_elem, Index& inverted) {
+  constexpr int NPE = 4;
   const std::size_t e_begin = chunk * kChunk;
   const std::size_t e_end = std::min(n_elements, e_begin + kChunk);
   const double dt = step.dt_prev;
@@ -166,20 +266,15 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
       }
       continue;
     }
-    double x[8], y[8], z[8], vx[8], vy[8], vz[8];
+    double x[4], y[4], z[4], vx[4], vy[4], vz[4];
     for (int i = 0; i < NPE; ++i) {
       const auto k = static_cast<std::size_t>(connectivity[s0 + i]);
       x[i] = nodes.x.x[k]; y[i] = nodes.x.y[k]; z[i] = nodes.x.z[k];
       vx[i] = nodes.v.x[k]; vy[i] = nodes.v.y[k]; vz[i] = nodes.v.z[k];
     }
-    double bx[8], by[8], bz[8], V = 0.0, amax = 0.0, l = 0.0;
-    if constexpr (NPE == 8) {
-      brick::volume_gradient(x, y, z, bx, by, bz, V, amax);
-      l = V / amax;
-    } else {
-      tetra_volume_gradient(x, y, z, bx, by, bz, V, amax);
-      l = 3.0 * V / amax;
-    }
+    double bx[4], by[4], bz[4], V = 0.0, amax = 0.0;
+    tetra_volume_gradient(x, y, z, bx, by, bz, V, amax);
+    const double l = 3.0 * V / amax;
     if (!(V > 0.0)) {
       if (inverted == kNoIndex) inverted = static_cast<Index>(e);
       for (int i = 0; i < NPE; ++i) {
@@ -195,7 +290,7 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
     double L[3][3] = {};
     double v_mid = V;
     {
-      double xm[8], ym[8], zm[8], mx[8], my[8], mz[8], vm = V, am = 0.0;
+      double xm[4], ym[4], zm[4], mx[4], my[4], mz[4], vm = V, am = 0.0;
       const double* gx = bx;
       const double* gy = by;
       const double* gz = bz;
@@ -205,10 +300,7 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
           ym[i] = y[i] - 0.5 * dt * vy[i];
           zm[i] = z[i] - 0.5 * dt * vz[i];
         }
-        if constexpr (NPE == 8)
-          brick::volume_gradient(xm, ym, zm, mx, my, mz, vm, am);
-        else
-          tetra_volume_gradient(xm, ym, zm, mx, my, mz, vm, am);
+        tetra_volume_gradient(xm, ym, zm, mx, my, mz, vm, am);
         if (vm > 0.0) {
           gx = mx;
           gy = my;
@@ -270,117 +362,11 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
     // Internal forces: f_iI = -(sigma_ij - q delta_ij) b_jI  (b = V B).
     const double sxx = s_new[0] - q, syy = s_new[1] - q, szz = s_new[2] - q;
     const double sxy = s_new[3], syz = s_new[4], szx = s_new[5];
-    double fx[8], fy[8], fz[8];
+    double fx[4], fy[4], fz[4];
     for (int i = 0; i < NPE; ++i) {
       fx[i] = -(sxx * bx[i] + sxy * by[i] + szx * bz[i]);
       fy[i] = -(sxy * bx[i] + syy * by[i] + syz * bz[i]);
       fz[i] = -(szx * bx[i] + syz * by[i] + szz * bz[i]);
-    }
-    if constexpr (NPE == 8) {
-      // FB hourglass projection gamma_alpha,I and hourglass velocities q_alpha.
-      double gam[4][8], qx[4], qy[4], qz[4];
-      for (int a = 0; a < 4; ++a) {
-        double hx = 0.0, hy = 0.0, hz = 0.0;
-        for (int i = 0; i < 8; ++i) {
-          hx += brick::kHourglass[a][i] * x[i];
-          hy += brick::kHourglass[a][i] * y[i];
-          hz += brick::kHourglass[a][i] * z[i];
-        }
-        qx[a] = qy[a] = qz[a] = 0.0;
-        for (int i = 0; i < 8; ++i) {
-          gam[a][i] = brick::kHourglass[a][i] - (hx * bx[i] + hy * by[i] + hz * bz[i]) * inv_v;
-          qx[a] += vx[i] * gam[a][i];
-          qy[a] += vy[i] * gam[a][i];
-          qz[a] += vz[i] * gam[a][i];
-        }
-      }
-      double Qx[4], Qy[4], Qz[4];
-      if (hourglass == HourglassForm::Viscous) {
-        const double cv = hourglass_coef * rho * c * std::cbrt(V * V) * 0.25;
-        double p = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          Qx[a] = cv * qx[a]; Qy[a] = cv * qy[a]; Qz[a] = cv * qz[a];
-          p += 0.5 * ((hg[a][e] + Qx[a]) * qx[a] + (hg[4 + a][e] + Qy[a]) * qy[a] + (hg[8 + a][e] + Qz[a]) * qz[a]);
-          hg[a][e] = Qx[a]; hg[4 + a][e] = Qy[a]; hg[8 + a][e] = Qz[a];
-        }
-        e_hg_inc += p * dt;
-      } else if (hourglass == HourglassForm::Stiffness) {
-        double bb = 0.0;
-        for (int i = 0; i < 8; ++i) bb += bx[i] * bx[i] + by[i] * by[i] + bz[i] * bz[i];
-        const double k = hourglass_coef * (mat.lambda + 2.0 * mat.G) * bb * inv_v / 8.0;
-        double p = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          const double ox = hg[a][e], oy = hg[4 + a][e], oz = hg[8 + a][e];
-          Qx[a] = ox + k * qx[a] * dt; Qy[a] = oy + k * qy[a] * dt; Qz[a] = oz + k * qz[a] * dt;
-          hg[a][e] = Qx[a]; hg[4 + a][e] = Qy[a]; hg[8 + a][e] = Qz[a];
-          p += 0.5 * ((ox + Qx[a]) * qx[a] + (oy + Qy[a]) * qy[a] + (oz + Qz[a]) * qz[a]);
-        }
-        e_hg_inc += p * dt;
-      } else {
-        // Corotational frame from the centre Jacobian columns g_j = sum_I xi_jI x_I / 8.
-        double g[3][3] = {};
-        for (int i = 0; i < 8; ++i) {
-          g[0][0] += brick::kXi[i] * x[i]; g[0][1] += brick::kXi[i] * y[i]; g[0][2] += brick::kXi[i] * z[i];
-          g[1][0] += brick::kEta[i] * x[i]; g[1][1] += brick::kEta[i] * y[i]; g[1][2] += brick::kEta[i] * z[i];
-          g[2][0] += brick::kZeta[i] * x[i]; g[2][1] += brick::kZeta[i] * y[i]; g[2][2] += brick::kZeta[i] * z[i];
-        }
-        double half[3], R[3][3];
-        for (int j = 0; j < 3; ++j) half[j] = 0.125 * std::sqrt(g[j][0] * g[j][0] + g[j][1] * g[j][1] + g[j][2] * g[j][2]);
-        for (int k = 0; k < 3; ++k) R[0][k] = g[0][k] / (8.0 * half[0]);
-        const double proj = R[0][0] * g[1][0] + R[0][1] * g[1][1] + R[0][2] * g[1][2];
-        double e2[3] = {g[1][0] - proj * R[0][0], g[1][1] - proj * R[0][1], g[1][2] - proj * R[0][2]};
-        const double n2 = std::sqrt(e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]);
-        for (int k = 0; k < 3; ++k) R[1][k] = e2[k] / n2;
-        R[2][0] = R[0][1] * R[1][2] - R[0][2] * R[1][1];
-        R[2][1] = R[0][2] * R[1][0] - R[0][0] * R[1][2];
-        R[2][2] = R[0][0] * R[1][1] - R[0][1] * R[1][0];
-        double u[3][4], dQ[3][4] = {};
-        for (int i = 0; i < 3; ++i)
-          for (int a = 0; a < 4; ++a) u[i][a] = (R[i][0] * qx[a] + R[i][1] * qy[a] + R[i][2] * qz[a]) * dt;
-        const HourglassCoefficients hc = physical_coefficients();
-        physical_hourglass(u, half, mat.G, V, hc.c1, hc.c2, hc.c3, dQ);
-        // Q is kept in the global frame and turned with the element spin W (Jaumann, like
-        // the stress): Q += dt W Q + R^T dQ. The frame R only orients the increment, so a
-        // badly distorted element whose Gram-Schmidt frame jumps cannot turn the stored
-        // hourglass force (that created energy in the hub case).
-        const double Wm[3][3] = {{0.0, wxy, -wzx}, {-wxy, 0.0, wyz}, {wzx, -wyz, 0.0}};
-        double p = 0.0;
-        double Qg[3][4];
-        for (int a = 0; a < 4; ++a) {
-          const double old[3] = {hg[a][e], hg[4 + a][e], hg[8 + a][e]};
-          const double qv[3] = {qx[a], qy[a], qz[a]};
-          for (int k = 0; k < 3; ++k) {
-            Qg[k][a] = old[k] + dt * (Wm[k][0] * old[0] + Wm[k][1] * old[1] + Wm[k][2] * old[2]) +
-                       R[0][k] * dQ[0][a] + R[1][k] * dQ[1][a] + R[2][k] * dQ[2][a];
-            hg[k * 4 + a][e] = Qg[k][a];
-            p += 0.5 * (old[k] + Qg[k][a]) * qv[k] * dt;
-          }
-        }
-        // The elastic part is the strain energy of the element's assumed hourglass strain
-        // field: internal energy, as in OpenRadioss Isolid 24. Only the viscous part below
-        // (artificial dissipation) is hourglass energy.
-        e_int[e] += p;
-        e_int_inc += p;
-        // Small viscous part (global frame), trapezoidal work like the viscous form.
-        const double cv = hc.viscous * hourglass_coef * rho * c * std::cbrt(V * V) * 0.25;
-        double pv = 0.0;
-        for (int a = 0; a < 4; ++a) {
-          const double vx_ = cv * qx[a], vy_ = cv * qy[a], vz_ = cv * qz[a];
-          pv += 0.5 * ((hg_visc[a][e] + vx_) * qx[a] + (hg_visc[4 + a][e] + vy_) * qy[a] +
-                       (hg_visc[8 + a][e] + vz_) * qz[a]);
-          hg_visc[a][e] = vx_; hg_visc[4 + a][e] = vy_; hg_visc[8 + a][e] = vz_;
-          Qx[a] = Qg[0][a] + vx_;
-          Qy[a] = Qg[1][a] + vy_;
-          Qz[a] = Qg[2][a] + vz_;
-        }
-        e_hg_inc += pv * dt;
-      }
-      for (int i = 0; i < 8; ++i)
-        for (int a = 0; a < 4; ++a) {
-          fx[i] -= Qx[a] * gam[a][i];
-          fy[i] -= Qy[a] * gam[a][i];
-          fz[i] -= Qz[a] * gam[a][i];
-        }
     }
     // Critical step: highest element frequency estimated by the Rayleigh quotient of the
     // dilatational mode u_I = B_I (exact for a box): with T = sum_I B_I (x) B_I,
@@ -413,28 +399,375 @@ void SolidGroup::compute_chunk(std::size_t chunk, const StepContext& step, const
   }
 }
 
+// One chunk of 8-node bricks as lanes (see BrickLanes). Element e = e0 + l is lane l; lanes
+// of deleted or inverted elements are computed like the others and masked on output
+// (ok = 0: state kept, zero slot force and stiffness), so no stage branches on the lane.
+void SolidGroup::compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
+                                     double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
+                                     Index& inverted) {
+  static thread_local BrickLanes lanes;
+  BrickLanes& b = lanes;
+  const std::size_t e0 = chunk * kChunk;
+  const std::size_t n = std::min(n_elements, e0 + kChunk) - e0;
+  const double dt = step.dt_prev;
+  const SolidMaterial& mat = material;
+  const bool visco = mat.viscoelastic(), plastic = mat.plastic();
+  const double M = mat.wave_modulus();
+
+  // Gather nodal x, v and the element state.
+  for (std::size_t l = 0; l < n; ++l) {
+    const Index* conn = &connectivity[(e0 + l) * 8];
+    for (int i = 0; i < 8; ++i) {
+      const auto k = static_cast<std::size_t>(conn[i]);
+      b.x[i][l] = nodes.x.x[k]; b.y[i][l] = nodes.x.y[k]; b.z[i][l] = nodes.x.z[k];
+      b.vx[i][l] = nodes.v.x[k]; b.vy[i][l] = nodes.v.y[k]; b.vz[i][l] = nodes.v.z[k];
+    }
+  }
+  for (int k = 0; k < 6; ++k) std::copy_n(sig[k].data() + e0, n, b.sig[k]);
+  if (visco)
+    for (int k = 0; k < 6; ++k) std::copy_n(hist[k].data() + e0, n, b.hist[k]);
+  else
+    for (int k = 0; k < 6; ++k) std::fill_n(b.hist[k], n, 0.0);
+  for (int k = 0; k < 12; ++k) std::copy_n(hg[k].data() + e0, n, b.hg[k]);
+  if (hourglass == HourglassForm::Physical)
+    for (int k = 0; k < 12; ++k) std::copy_n(hg_visc[k].data() + e0, n, b.hgv[k]);
+  std::copy_n(mass.data() + e0, n, b.mass);
+  std::copy_n(q_bulk.data() + e0, n, b.q_old);
+  std::copy_n(e_int.data() + e0, n, b.e_int);
+
+  brick::volume_gradient_lanes(n, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
+  for (std::size_t l = 0; l < n; ++l) {
+    const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
+    if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
+    b.ok[l] = good ? 1.0 : 0.0;
+    b.V[l] = good ? b.V[l] : 1.0;  // masked lanes: finite values only
+    b.amax2[l] = good ? b.amax2[l] : 1.0;
+  }
+
+  // Velocity gradient L_ij = sum_I v_iI B_jI on the mid-step configuration
+  // x^{n-1/2} = x^n - dt/2 v^{n-1/2} (second-order accurate strain increment; the stress
+  // work then matches the trapezoidal work of the nodal forces). A lane whose mid-step
+  // volume is not positive uses the current configuration.
+  if (dt > 0.0) {
+    const double hdt = 0.5 * dt;
+    for (int i = 0; i < 8; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        b.fx[i][l] = b.x[i][l] - hdt * b.vx[i][l];
+        b.fy[i][l] = b.y[i][l] - hdt * b.vy[i][l];
+        b.fz[i][l] = b.z[i][l] - hdt * b.vz[i][l];
+      }
+    brick::volume_gradient_lanes(n, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.amid2);
+    for (int i = 0; i < 8; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        const bool mid = b.Vm[l] > 0.0;
+        b.mx[i][l] = mid ? b.mx[i][l] : b.bx[i][l];
+        b.my[i][l] = mid ? b.my[i][l] : b.by[i][l];
+        b.mz[i][l] = mid ? b.mz[i][l] : b.bz[i][l];
+      }
+    for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
+  } else {
+    for (int i = 0; i < 8; ++i) {
+      std::copy_n(b.bx[i], n, b.mx[i]);
+      std::copy_n(b.by[i], n, b.my[i]);
+      std::copy_n(b.bz[i], n, b.mz[i]);
+    }
+    std::copy_n(b.V, n, b.Vm);
+  }
+  for (int k = 0; k < 9; ++k) std::fill_n(b.L[k], n, 0.0);
+  for (int i = 0; i < 8; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      b.L[0][l] += b.vx[i][l] * b.mx[i][l]; b.L[1][l] += b.vx[i][l] * b.my[i][l]; b.L[2][l] += b.vx[i][l] * b.mz[i][l];
+      b.L[3][l] += b.vy[i][l] * b.mx[i][l]; b.L[4][l] += b.vy[i][l] * b.my[i][l]; b.L[5][l] += b.vy[i][l] * b.mz[i][l];
+      b.L[6][l] += b.vz[i][l] * b.mx[i][l]; b.L[7][l] += b.vz[i][l] * b.my[i][l]; b.L[8][l] += b.vz[i][l] * b.mz[i][l];
+    }
+  for (std::size_t l = 0; l < n; ++l) {
+    const double iv = 1.0 / b.Vm[l];
+    const double L00 = b.L[0][l] * iv, L01 = b.L[1][l] * iv, L02 = b.L[2][l] * iv;
+    const double L10 = b.L[3][l] * iv, L11 = b.L[4][l] * iv, L12 = b.L[5][l] * iv;
+    const double L20 = b.L[6][l] * iv, L21 = b.L[7][l] * iv, L22 = b.L[8][l] * iv;
+    b.d[0][l] = L00; b.d[1][l] = L11; b.d[2][l] = L22;
+    b.d[3][l] = 0.5 * (L01 + L10); b.d[4][l] = 0.5 * (L12 + L21); b.d[5][l] = 0.5 * (L20 + L02);
+    b.w[0][l] = 0.5 * (L01 - L10); b.w[1][l] = 0.5 * (L12 - L21); b.w[2][l] = 0.5 * (L20 - L02);
+  }
+
+  // Stress update over dt^{n-1/2} (solid_material.hpp). Old total stress power first, for
+  // the trapezoidal internal energy below (stored in de).
+  for (std::size_t l = 0; l < n; ++l) {
+    double s[6];
+    for (int k = 0; k < 6; ++k) s[k] = b.sig[k][l] + b.hist[k][l];
+    b.de[l] = s[0] * b.d[0][l] + s[1] * b.d[1][l] + s[2] * b.d[2][l] +
+              2.0 * (s[3] * b.d[3][l] + s[4] * b.d[4][l] + s[5] * b.d[5][l]);
+  }
+  if (!(dt > 0.0)) {
+    for (int k = 0; k < 6; ++k)
+      for (std::size_t l = 0; l < n; ++l) b.s_new[k][l] = b.sig[k][l] + b.hist[k][l];
+  } else if (mat.law == SolidLaw::Elastic || visco) {
+    // LAW1 and LAW34 over the lanes: Jaumann rotation, deviatoric and volumetric parts;
+    // LAW34 hereditary deviator h^{n+1} = exp(-beta dt)(h + dt(Wh - hW)) + 2(G0 - Ginf)
+    // (1 - exp(-beta dt))/(beta dt) de (constants of the step hoisted).
+    const double x = mat.beta * dt;
+    const double decay = visco ? std::exp(-x) : 0.0;
+    const double gain = visco ? ((x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x) : 0.0;
+    const double two_g = 2.0 * (visco ? mat.Ginf : mat.G);
+    const double two_gh = visco ? 2.0 * (mat.G0 - mat.Ginf) * gain : 0.0;
+    const double K = mat.K;
+    for (std::size_t l = 0; l < n; ++l) {
+      const double s[6] = {b.sig[0][l], b.sig[1][l], b.sig[2][l], b.sig[3][l], b.sig[4][l], b.sig[5][l]};
+      const double h[6] = {b.hist[0][l], b.hist[1][l], b.hist[2][l], b.hist[3][l], b.hist[4][l], b.hist[5][l]};
+      const double wxy = b.w[0][l], wyz = b.w[1][l], wzx = b.w[2][l];
+      double rot[6], hrot[6];
+      jaumann_increment(s, wxy, wyz, wzx, dt, rot);
+      jaumann_increment(h, wxy, wyz, wzx, dt, hrot);
+      const double dv = (b.d[0][l] + b.d[1][l] + b.d[2][l]) * dt;
+      const double dev[6] = {b.d[0][l] * dt - dv / 3.0, b.d[1][l] * dt - dv / 3.0, b.d[2][l] * dt - dv / 3.0,
+                             b.d[3][l] * dt, b.d[4][l] * dt, b.d[5][l] * dt};
+      for (int k = 0; k < 6; ++k) {
+        const double sn = s[k] + rot[k] + two_g * dev[k] + (k < 3 ? K * dv : 0.0);
+        const double hn = decay * (h[k] + hrot[k]) + two_gh * dev[k];
+        b.sig[k][l] = sn;
+        b.hist[k][l] = hn;
+        b.s_new[k][l] = sn + hn;
+      }
+    }
+  } else {
+    // LAW2 / LAW36: radial return per lane (scalar).
+    for (std::size_t l = 0; l < n; ++l) {
+      if (b.ok[l] == 0.0) {
+        for (int k = 0; k < 6; ++k) b.s_new[k][l] = b.sig[k][l];
+        continue;
+      }
+      double s[6], out[6], ep = eps_p[e0 + l];
+      for (int k = 0; k < 6; ++k) s[k] = b.sig[k][l];
+      const double dd[6] = {b.d[0][l], b.d[1][l], b.d[2][l], b.d[3][l], b.d[4][l], b.d[5][l]};
+      const SolidPointState st{s, nullptr, &ep};
+      update_solid_stress(mat, st, dd, b.w[0][l], b.w[1][l], b.w[2][l], dt, out);
+      for (int k = 0; k < 6; ++k) {
+        b.sig[k][l] = s[k];
+        b.s_new[k][l] = out[k];
+      }
+      eps_p[e0 + l] = ep;
+      if (ep >= mat.plasticity.eps_p_max) alive[e0 + l] = 2;  // deleted after this cycle
+    }
+  }
+
+  // Density, wave speed, characteristic length V / largest face area and V^(2/3) (square
+  // and cube roots in loops of their own: the others then vectorise without -fno-math-errno).
+  for (std::size_t l = 0; l < n; ++l) {
+    b.rho[l] = b.mass[l] / b.V[l];
+    b.c[l] = M / b.rho[l];
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    b.c[l] = std::sqrt(b.c[l]);
+    b.lc[l] = b.V[l] / (4.0 * std::sqrt(b.amax2[l]));
+  }
+  if (hourglass != HourglassForm::Stiffness)
+    for (std::size_t l = 0; l < n; ++l) b.v23[l] = std::cbrt(b.V[l] * b.V[l]);
+
+  // Bulk viscosity (compression only): q = rho l (qa^2 l dv^2 - qb c dv), dv = tr D < 0.
+  // Internal energy: trapezoidal stress power 0.5 ((s - q I)^{n-1} + (s - q I)^n):D V dt
+  // (all energies use this trapezoidal form so that they telescope with the kinetic
+  // energy of the central difference scheme, see account_energies).
+  // Internal forces: f_iI = -(sigma_ij - q delta_ij) b_jI  (b = V B).
+  const double qa2 = qa * qa, qb_ = qb;  // locals: the lane stores cannot alias them
+  for (std::size_t l = 0; l < n; ++l) {
+    const double rho = b.rho[l], c = b.c[l], lc = b.lc[l];
+    const double d0 = b.d[0][l], d1 = b.d[1][l], d2 = b.d[2][l], d3 = b.d[3][l], d4 = b.d[4][l], d5 = b.d[5][l];
+    const double dv = d0 + d1 + d2;
+    const bool comp = dv < 0.0;
+    const double q = comp ? rho * lc * (qa2 * lc * dv * dv - qb_ * c * dv) : 0.0;
+    b.qv[l] = comp ? qb_ * c + qa2 * lc * (-dv) : 0.0;
+    const double s0 = b.s_new[0][l], s1 = b.s_new[1][l], s2 = b.s_new[2][l];
+    const double sxy = b.s_new[3][l], syz = b.s_new[4][l], szx = b.s_new[5][l];
+    const double p_new = s0 * d0 + s1 * d1 + s2 * d2 + 2.0 * (sxy * d3 + syz * d4 + szx * d5);
+    b.de[l] = (0.5 * (b.de[l] + p_new) - 0.5 * (b.q_old[l] + q) * dv) * b.Vm[l] * dt;
+    b.q[l] = q;
+    b.s_new[0][l] = s0 - q;
+    b.s_new[1][l] = s1 - q;
+    b.s_new[2][l] = s2 - q;
+  }
+  for (int i = 0; i < 8; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      const double sxx = b.s_new[0][l], syy = b.s_new[1][l], szz = b.s_new[2][l];
+      const double sxy = b.s_new[3][l], syz = b.s_new[4][l], szx = b.s_new[5][l];
+      b.fx[i][l] = -(sxx * b.bx[i][l] + sxy * b.by[i][l] + szx * b.bz[i][l]);
+      b.fy[i][l] = -(sxy * b.bx[i][l] + syy * b.by[i][l] + syz * b.bz[i][l]);
+      b.fz[i][l] = -(szx * b.bx[i][l] + syz * b.by[i][l] + szz * b.bz[i][l]);
+    }
+
+  // FB hourglass projection gamma_alpha,I = h_alpha,I - (sum_J h_alpha,J x_J) . B_I and
+  // hourglass velocities q_alpha = sum_I v_I gamma_alpha,I.
+  for (int a = 0; a < 4; ++a) {
+    const double* ha = brick::kHourglass[a];
+    for (std::size_t l = 0; l < n; ++l) {
+      double hx = 0.0, hy = 0.0, hz = 0.0;
+      for (int i = 0; i < 8; ++i) {
+        hx += ha[i] * b.x[i][l];
+        hy += ha[i] * b.y[i][l];
+        hz += ha[i] * b.z[i][l];
+      }
+      const double iv = 1.0 / b.V[l];
+      double qx = 0.0, qy = 0.0, qz = 0.0;
+      for (int i = 0; i < 8; ++i) {
+        const double gai = ha[i] - (hx * b.bx[i][l] + hy * b.by[i][l] + hz * b.bz[i][l]) * iv;
+        b.gam[a][i][l] = gai;
+        qx += b.vx[i][l] * gai;
+        qy += b.vy[i][l] * gai;
+        qz += b.vz[i][l] * gai;
+      }
+      b.qx[a][l] = qx; b.qy[a][l] = qy; b.qz[a][l] = qz;
+    }
+  }
+  std::fill_n(b.p_int, n, 0.0);
+  if (hourglass == HourglassForm::Viscous) {
+    // f = -c q gamma, c = h rho c_wave V^(2/3) / 4 (FB 1981); trapezoidal work.
+    const double cf = hourglass_coef * 0.25;
+    for (std::size_t l = 0; l < n; ++l) {
+      const double cv = cf * b.rho[l] * b.c[l] * b.v23[l];
+      double p = 0.0;
+      for (int a = 0; a < 4; ++a) {
+        const double Qx = cv * b.qx[a][l], Qy = cv * b.qy[a][l], Qz = cv * b.qz[a][l];
+        p += 0.5 * ((b.hg[a][l] + Qx) * b.qx[a][l] + (b.hg[4 + a][l] + Qy) * b.qy[a][l] +
+                    (b.hg[8 + a][l] + Qz) * b.qz[a][l]);
+        b.Qx[a][l] = Qx; b.Qy[a][l] = Qy; b.Qz[a][l] = Qz;
+        b.hg[a][l] = Qx; b.hg[4 + a][l] = Qy; b.hg[8 + a][l] = Qz;
+      }
+      b.p_hg[l] = p * dt;
+    }
+  } else if (hourglass == HourglassForm::Stiffness) {
+    // Q += k q dt, k = h (lambda + 2G) V (B:B) / 8.
+    const double kf = hourglass_coef * (mat.lambda + 2.0 * mat.G) / 8.0;
+    for (std::size_t l = 0; l < n; ++l) {
+      double bb = 0.0;
+      for (int i = 0; i < 8; ++i) bb += b.bx[i][l] * b.bx[i][l] + b.by[i][l] * b.by[i][l] + b.bz[i][l] * b.bz[i][l];
+      const double kdt = kf * bb / b.V[l] * dt;
+      double p = 0.0;
+      for (int a = 0; a < 4; ++a) {
+        const double ox = b.hg[a][l], oy = b.hg[4 + a][l], oz = b.hg[8 + a][l];
+        const double Qx = ox + kdt * b.qx[a][l], Qy = oy + kdt * b.qy[a][l], Qz = oz + kdt * b.qz[a][l];
+        b.Qx[a][l] = Qx; b.Qy[a][l] = Qy; b.Qz[a][l] = Qz;
+        b.hg[a][l] = Qx; b.hg[4 + a][l] = Qy; b.hg[8 + a][l] = Qz;
+        p += 0.5 * ((ox + Qx) * b.qx[a][l] + (oy + Qy) * b.qy[a][l] + (oz + Qz) * b.qz[a][l]);
+      }
+      b.p_hg[l] = p * dt;
+    }
+  } else {
+    physical_hourglass_lanes(b, n, dt, mat.G, physical_coefficients(),
+                             physical_coefficients().viscous * hourglass_coef * 0.25);
+  }
+  for (int i = 0; i < 8; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      double fx = b.fx[i][l], fy = b.fy[i][l], fz = b.fz[i][l];
+      for (int a = 0; a < 4; ++a) {
+        fx -= b.Qx[a][l] * b.gam[a][i][l];
+        fy -= b.Qy[a][l] * b.gam[a][i][l];
+        fz -= b.Qz[a][l] * b.gam[a][i][l];
+      }
+      b.fx[i][l] = fx; b.fy[i][l] = fy; b.fz[i][l] = fz;
+    }
+
+  // Critical step: highest element frequency estimated by the Rayleigh quotient of the
+  // dilatational mode u_I = B_I (exact for a box): with T = sum_I B_I (x) B_I,
+  // omega^2 = n (lambda tr(T)^2 + 2 G T:T) / (rho tr(T)); dt = 2 / omega, i.e. an
+  // effective length l_eff = 2 c / omega, reduced by bulk viscosity:
+  // dt = l_eff / (Q + sqrt(Q^2 + c^2)).
+  const double lambda = mat.lambda, two_G = 2.0 * mat.G;
+  for (std::size_t l = 0; l < n; ++l) {
+    double txx = 0, tyy = 0, tzz = 0, txy = 0, tyz = 0, tzx = 0;
+    for (int i = 0; i < 8; ++i) {
+      txx += b.bx[i][l] * b.bx[i][l]; tyy += b.by[i][l] * b.by[i][l]; tzz += b.bz[i][l] * b.bz[i][l];
+      txy += b.bx[i][l] * b.by[i][l]; tyz += b.by[i][l] * b.bz[i][l]; tzx += b.bz[i][l] * b.bx[i][l];
+    }
+    const double iv = 1.0 / b.V[l];
+    const double iv2 = iv * iv;
+    const double trT = (txx + tyy + tzz) * iv2;
+    const double TT = (txx * txx + tyy * tyy + tzz * tzz + 2.0 * (txy * txy + tyz * tyz + tzx * tzx)) * iv2 * iv2;
+    b.dte[l] = 8.0 * (lambda * trT * trT + two_G * TT) / (b.rho[l] * trT);  // omega^2
+    b.tmp[l] = b.qv[l] * b.qv[l] + b.c[l] * b.c[l];
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    b.dte[l] = std::sqrt(b.dte[l]);
+    b.tmp[l] = std::sqrt(b.tmp[l]);
+  }
+  for (std::size_t l = 0; l < n; ++l) b.dte[l] = (2.0 * b.c[l] / b.dte[l]) / (b.qv[l] + b.tmp[l]);
+
+  // Scatter to the slots and write the state back (masked lanes: zero slots, state kept).
+  for (std::size_t l = 0; l < n; ++l) {
+    const std::size_t s0 = (e0 + l) * 8;
+    const double k_slot = b.ok[l] * 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]);
+    const bool ok = b.ok[l] != 0.0;
+    for (int i = 0; i < 8; ++i) {
+      slot_force.x[s0 + i] = ok ? b.fx[i][l] : 0.0;
+      slot_force.y[s0 + i] = ok ? b.fy[i][l] : 0.0;
+      slot_force.z[s0 + i] = ok ? b.fz[i][l] : 0.0;
+      slot_stiffness[s0 + i] = ok ? k_slot : 0.0;
+    }
+  }
+  const auto keep = [&](std::vector<double>& dst, const double* src) {
+    double* out = dst.data() + e0;
+    for (std::size_t l = 0; l < n; ++l) out[l] = b.ok[l] != 0.0 ? src[l] : out[l];
+  };
+  if (plastic || dt > 0.0)
+    for (int k = 0; k < 6; ++k) keep(sig[k], b.sig[k]);
+  if (visco && dt > 0.0)
+    for (int k = 0; k < 6; ++k) keep(hist[k], b.hist[k]);
+  for (int k = 0; k < 12; ++k) keep(hg[k], b.hg[k]);
+  if (hourglass == HourglassForm::Physical)
+    for (int k = 0; k < 12; ++k) keep(hg_visc[k], b.hgv[k]);
+  keep(q_bulk, b.q);
+  for (std::size_t l = 0; l < n; ++l) b.e_int[l] = (b.e_int[l] + b.de[l]) + b.p_int[l];
+  keep(e_int, b.e_int);
+  // Reductions in element order (the same sums whatever the thread count).
+  for (std::size_t l = 0; l < n; ++l) {
+    if (b.ok[l] == 0.0) continue;
+    e_int_inc += b.de[l];
+    e_int_inc += b.p_int[l];
+    e_hg_inc += b.p_hg[l];
+    if (b.dte[l] < dt_min) {
+      dt_min = b.dte[l];
+      dt_elem = static_cast<Index>(e0 + l);
+    }
+  }
+}
+
 void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes,
                                 GroupStepResult& result) {
+  // Per-chunk sums, reduced in chunk order (independent of the thread count). Groups of a
+  // few chunks (most groups of the body model) use the stack: no allocation per call.
+  struct ChunkSums {
+    double e_int = 0.0, e_hg = 0.0, dt = std::numeric_limits<double>::infinity();
+    Index dt_elem = kNoIndex, inverted = kNoIndex;
+  };
+  constexpr std::size_t kStackChunks = 16;
   const std::size_t nch = n_chunks(n_elements);
-  std::vector<double> e_int_c(nch, 0.0), e_hg_c(nch, 0.0),
-      dt_c(nch, std::numeric_limits<double>::infinity());
-  std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
-#pragma omp parallel for schedule(static) if (nch >= 8)
-  for (std::size_t ch = 0; ch < nch; ++ch) {
+  ChunkSums stack_sums[kStackChunks];
+  std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
+  ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
+  if (nch == 1) {
+    ChunkSums& c = sums[0];
     if (nodes_per_element == 8)
-      compute_chunk<8>(ch, step, nodes, e_int_c[ch], e_hg_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);
+      compute_brick_chunk(0, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
     else
-      compute_chunk<4>(ch, step, nodes, e_int_c[ch], e_hg_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);
+      compute_tetra_chunk(0, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
+  } else {
+#pragma omp parallel for schedule(static) if (nch >= 8)
+    for (std::size_t ch = 0; ch < nch; ++ch) {
+      ChunkSums& c = sums[ch];
+      if (nodes_per_element == 8)
+        compute_brick_chunk(ch, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
+      else
+        compute_tetra_chunk(ch, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
+    }
   }
   for (std::size_t ch = 0; ch < nch; ++ch) {
-    energy.internal += e_int_c[ch];
-    energy.hourglass += e_hg_c[ch];
-    if (dt_c[ch] < result.dt_min) {
-      result.dt_min = dt_c[ch];
-      result.dt_element = dt_el[ch];
+    const ChunkSums& c = sums[ch];
+    energy.internal += c.e_int;
+    energy.hourglass += c.e_hg;
+    if (c.dt < result.dt_min) {
+      result.dt_min = c.dt;
+      result.dt_element = c.dt_elem;
     }
-    if (result.inverted_element == kNoIndex && inv_el[ch] != kNoIndex)
-      result.inverted_element = inv_el[ch];
+    if (result.inverted_element == kNoIndex && c.inverted != kNoIndex)
+      result.inverted_element = c.inverted;
   }
   if (material.plastic()) {
     for (std::size_t e = 0; e < n_elements; ++e)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Solid element group: 8-node bricks (one-point Flanagan-Belytschko, degenerate prism /
 // tetra shapes allowed) or 4-node constant-strain tetrahedra, of one part.
-// Struct of arrays; the kernel in solid_group.cpp runs per chunk of kChunk elements.
+// Struct of arrays; the kernel in solid_group.cpp runs per chunk of kChunk elements, the
+// brick kernel as loops over the chunk's elements (lanes) that the compiler vectorises.
 //
 // Hourglass control (bricks), chosen by /PROP/TYPE14 Isolid:
 //  - Viscous (Isolid 0/1, default except LAW34): f = -c q gamma,
@@ -68,10 +69,13 @@ class SolidGroup final : public ElementGroup {
   void stress(std::size_t e, double s[6]) const;
 
  private:
-  template <int NPE>
-  void compute_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
-                     double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
-                     Index& inverted);
+  // 8-node bricks: one chunk as vectorised loops over its elements (lanes).
+  void compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
+                           double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
+                           Index& inverted);
+  // 4-node tetrahedra: one chunk element by element.
+  void compute_tetra_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
+                           double& e_int_inc, double& dt_min, Index& dt_elem, Index& inverted);
 };
 
 }  // namespace hbm::solver
