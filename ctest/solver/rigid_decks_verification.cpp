@@ -11,15 +11,15 @@
 //  rigid_spring_impact      momentum and angular momentum of mass + body conserved (1e-8),
 //                           energy error below 1e-4; its time histories are bitwise
 //                           identical with 1 and 2 threads
-#include "springs_deck_runner.hpp"
+#include "example_deck_runner.hpp"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstdio>
 
+using hbm::solver::testing::read_text;
 using hbm::solver::testing::read_th;
 using hbm::solver::testing::run_deck;
 using hbm::solver::testing::ThTable;
@@ -113,7 +113,7 @@ TEST(RigidDecks, SpringImpactConservesMomentum) {
   auto vec = [](const ThTable& t, const std::string& k, std::size_t i) {
     return Eigen::Vector3d(t.column(k + "X")[i], t.column(k + "Y")[i], t.column(k + "Z")[i]);
   };
-  Eigen::Vector3d P0, J0;
+  Eigen::Vector3d P0 = Eigen::Vector3d::Zero(), J0 = Eigen::Vector3d::Zero();  // set at i = 0
   double dp = 0, dj = 0, derr = 0, spin = 0;
   const auto err = body.column("energy error");
   for (std::size_t i = 0; i < node.rows.size(); ++i) {
@@ -141,11 +141,9 @@ TEST(RigidDecks, SpringImpactIsBitwiseIdenticalWithOneAndTwoThreads) {
   ASSERT_FALSE(one.empty());
   ASSERT_FALSE(two.empty());
   for (const std::string f : {"rigid_spring_impact_TH_NODE_1.csv", "rigid_spring_impact_TH_RBODY_1.csv"}) {
-    std::stringstream a, b;
-    a << std::ifstream(one / f).rdbuf();
-    b << std::ifstream(two / f).rdbuf();
-    EXPECT_FALSE(a.str().empty());
-    EXPECT_TRUE(a.str() == b.str()) << f << " differs between 1 and 2 threads";
+    const std::string a = read_text(one / f), b = read_text(two / f);
+    EXPECT_FALSE(a.empty());
+    EXPECT_TRUE(a == b) << f << " differs between 1 and 2 threads";
   }
 }
 

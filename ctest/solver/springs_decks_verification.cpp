@@ -7,10 +7,11 @@
 //  springs_torsion      TYPE8 and TYPE13 torsion period 2 pi sqrt(J/K) (0.5 %), MX = K4 RX
 //  springs_nonlinear    H=0 force on its curve (1e-9 kN); H=1 unloading slope K (1e-6),
 //                       permanent set d_pk - f(d_pk)/K (1e-6 mm), d_pk the peak elongation
-#include "springs_deck_runner.hpp"
+#include "example_deck_runner.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 using hbm::solver::testing::read_th;
 using hbm::solver::testing::run_deck;
