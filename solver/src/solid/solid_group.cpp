@@ -66,9 +66,9 @@ inline void physical_hourglass(const double u[3][4], const double a[3], double G
 
 // Lanes of one chunk of bricks: every array is [component][lane] (or [lane]), so each stage
 // of the kernel is a loop over the lanes that the compiler vectorises. One instance per
-// thread (thread_local): about 230 KB, too large for an OpenMP worker's stack.
+// thread (thread_local): about 60 KB with W = 32.
 struct BrickLanes {
-  static constexpr std::size_t W = kChunk;
+  static constexpr std::size_t W = 32;  // lanes per batch: the arrays stay in L1/L2
   alignas(64) double x[8][W], y[8][W], z[8][W], vx[8][W], vy[8][W], vz[8][W];
   alignas(64) double bx[8][W], by[8][W], bz[8][W];   // volume gradient, current configuration
   alignas(64) double mx[8][W], my[8][W], mz[8][W];   // volume gradient, mid-step configuration
@@ -399,16 +399,24 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
   }
 }
 
-// One chunk of 8-node bricks as lanes (see BrickLanes). Element e = e0 + l is lane l; lanes
-// of deleted or inverted elements are computed like the others and masked on output
-// (ok = 0: state kept, zero slot force and stiffness), so no stage branches on the lane.
+// One chunk of 8-node bricks, in batches of BrickLanes::W elements (lanes).
 void SolidGroup::compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                                      double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
                                      Index& inverted) {
+  const std::size_t e_begin = chunk * kChunk, e_end = std::min(n_elements, e_begin + kChunk);
+  for (std::size_t e0 = e_begin; e0 < e_end; e0 += BrickLanes::W)
+    compute_brick_lanes(e0, std::min(BrickLanes::W, e_end - e0), step, nodes, e_int_inc, e_hg_inc, dt_min,
+                        dt_elem, inverted);
+}
+
+// Elements e0 .. e0+n-1 (n <= BrickLanes::W) as lanes: element e0 + l is lane l. Lanes of
+// deleted or inverted elements are computed like the others and masked on output (ok = 0:
+// state kept, zero slot force and stiffness), so no stage branches on the lane.
+void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepContext& step,
+                                     const NodalState& nodes, double& e_int_inc, double& e_hg_inc,
+                                     double& dt_min, Index& dt_elem, Index& inverted) {
   static thread_local BrickLanes lanes;
   BrickLanes& b = lanes;
-  const std::size_t e0 = chunk * kChunk;
-  const std::size_t n = std::min(n_elements, e0 + kChunk) - e0;
   const double dt = step.dt_prev;
   const SolidMaterial& mat = material;
   const bool visco = mat.viscoelastic(), plastic = mat.plastic();

@@ -69,10 +69,14 @@ class SolidGroup final : public ElementGroup {
   void stress(std::size_t e, double s[6]) const;
 
  private:
-  // 8-node bricks: one chunk as vectorised loops over its elements (lanes).
+  // 8-node bricks: one chunk in batches of elements (lanes), each stage a vectorised loop
+  // over the lanes of a batch.
   void compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                            double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
                            Index& inverted);
+  void compute_brick_lanes(std::size_t e0, std::size_t n, const StepContext& step,
+                           const NodalState& nodes, double& e_int_inc, double& e_hg_inc,
+                           double& dt_min, Index& dt_elem, Index& inverted);
   // 4-node tetrahedra: one chunk element by element.
   void compute_tetra_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                            double& e_int_inc, double& dt_min, Index& dt_elem, Index& inverted);
