@@ -133,7 +133,9 @@ void fill_group(BuildContext& ctx, std::string_view kw, Index part,
       const auto& row = c->row(r);
       g->element_id.push_back(c->integer(row, "id"));
       for (int i = 0; i < npe; ++i) {
-        const Index n = ctx.require_node(*c, row, "n" + std::to_string(i + 1));
+        std::string field = "n";  // appended in steps: GCC 12 -Wrestrict false positive on "n" + to_string
+        field += std::to_string(i + 1);
+        const Index n = ctx.require_node(*c, row, field);
         ok = ok && n != kNoIndex;
         g->connectivity.push_back(n);
       }
