@@ -924,18 +924,19 @@ void Builder::build_contacts() {
   // Closed torso surface (boundary of the torso hexahedra) for inside/outside tests.
   auto boundary = hex_boundary_faces(torso_hexes_);
   TriSurface torso_surface = triangulate(m_.nodes, boundary);
-  // Secondary nodes: outside the torso and at least twice the contact gap from its surface,
-  // so that no contact starts penetrated.
-  auto outside = [&](const std::vector<int>& nodes, double gap) {
+  // Secondary nodes on one side of the torso surface (outside, or inside for the clavicle)
+  // and at least twice the contact gap from it, so that no contact starts penetrated.
+  auto clear_of_torso = [&](const std::vector<int>& nodes, double gap, bool want_inside) {
     std::vector<Eigen::Vector3d> q;
     for (int n : nodes) q.push_back(m_.nodes[static_cast<std::size_t>(n)]);
     auto in = inside_surface(torso_surface, q);
     auto dist = distance_to_surface(torso_surface, q);
     std::vector<int> out;
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      if (!in[i] && dist[i] >= 2 * gap) out.push_back(nodes[i]);
+      if (in[i] == want_inside && dist[i] >= 2 * gap) out.push_back(nodes[i]);
     return out;
   };
+  auto outside = [&](const std::vector<int>& nodes, double gap) { return clear_of_torso(nodes, gap, false); };
   std::vector<std::array<int, 4>> skin = torso_skin_;
   skin.insert(skin.end(), neck_skin_.begin(), neck_skin_.end());
   auto add = [&](const std::string& name, int type, std::vector<int> sec, std::vector<std::array<int, 4>> main, double gap) {
@@ -984,17 +985,7 @@ void Builder::build_contacts() {
   // deep under the skin as penetrating (33.9 % energy error at cycle 0 in the drop deck).
   // Secondaries: the clavicle nodes inside the torso at least two gaps from the skin.
   {
-    auto inside_clear = [&](const std::vector<int>& nodes, double gap) {
-      std::vector<Eigen::Vector3d> q;
-      for (int n : nodes) q.push_back(m_.nodes[static_cast<std::size_t>(n)]);
-      auto in = inside_surface(torso_surface, q);
-      auto dist = distance_to_surface(torso_surface, q);
-      std::vector<int> out;
-      for (std::size_t i = 0; i < nodes.size(); ++i)
-        if (in[i] && dist[i] >= 2 * gap) out.push_back(nodes[i]);
-      return out;
-    };
-    add("clavicle_skin", 7, inside_clear(clav, 1.0), {}, 1.0);
+    add("clavicle_skin", 7, clear_of_torso(clav, 1.0, true), {}, 1.0);
     auto& f = m_.interfaces.back();
     for (std::size_t p = 0; p < m_.parts.size(); ++p)
       if (m_.parts[p].name.rfind("skin_", 0) == 0) f.main_parts.push_back(static_cast<int>(p));
