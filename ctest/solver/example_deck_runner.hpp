@@ -3,7 +3,7 @@
 // CSV files (header names -> columns), the listing, and VTK frames through a Python script
 // run with VTK's own reader. Two ways to run:
 //  - run_deck: the hbm-solver executable (HBM_SOLVER_EXE), outputs in
-//    ./out_<name><tag>/, its console in ./out_<name><tag>.log (any test area);
+//    ./out_<name><tag><per-process suffix>/, its console in the same name + .log (any test area);
 //  - run_in_process: hbm::solver::run_deck in the test process, keeping the frozen model
 //    for inspection (tests linked with the whole engine: run_* and shelldecks_*).
 // Used by the deck verifications of the engine, shells, springs, rigid bodies and contact.
@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +24,17 @@
 #include <vector>
 
 namespace hbm::solver::testing {
+
+// CTest runs every test case of a file as its own process (gtest_discover_tests), so the
+// fixtures of one suite run the same deck at the same time: each process writes into a
+// folder named after its --gtest_filter (empty for a whole-file run).
+inline std::string per_process_suffix() {
+  const std::string f = ::testing::GTEST_FLAG(filter);
+  if (f.empty() || f == "*") return "";
+  std::string s = "_";
+  for (char c : f) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return s;
+}
 
 inline std::filesystem::path example_deck(const std::string& name) {
   return std::filesystem::path(HBM_SOURCE_DIR) / "decks" / "examples" / name / (name + "_0000.rad");
@@ -87,7 +99,7 @@ inline std::filesystem::path run_deck(const std::string& name, const std::string
   ADD_FAILURE() << "hbm-solver was not built";
   return {};
 #else
-  const std::filesystem::path out = std::filesystem::current_path() / ("out_" + name + tag);
+  const std::filesystem::path out = std::filesystem::current_path() / ("out_" + name + tag + per_process_suffix());
   std::filesystem::remove_all(out);
   const std::string cmd = std::string("'") + HBM_SOLVER_EXE + "' '" + example_deck(name).string() + "' --out '" +
                           out.string() + "' " + args + " > '" + out.string() + ".log' 2>&1";
@@ -109,7 +121,8 @@ struct InProcessRun {
 inline std::unique_ptr<InProcessRun> run_in_process(const std::string& name, std::filesystem::path starter = {},
                                                     int threads = 0) {
   auto r = std::make_unique<InProcessRun>();
-  r->out = std::filesystem::current_path() / ("out_" + name + (threads ? "_t" + std::to_string(threads) : ""));
+  r->out = std::filesystem::current_path() /
+           ("out_" + name + (threads ? "_t" + std::to_string(threads) : "") + per_process_suffix());
   std::filesystem::remove_all(r->out);
   RunOptions opt;
   opt.out_dir = r->out;

@@ -20,7 +20,7 @@
 //  energy     engine energy error below 1e-6 at every output (the wall work enters W_ext
 //             split over the half steps), wall work = kinetic energy lost.
 //  threads    time histories bitwise identical with 1 and 2 threads.
-#include "springs_deck_runner.hpp"
+#include "example_deck_runner.hpp"
 
 #include <Eigen/Dense>
 

@@ -4,7 +4,7 @@
 // hardening rule without its curve, a rotational spring without inertia, a spring joining
 // a node to itself, a rigid body on an empty or overlapping node group. The decks are the
 // verification deck springs_mass_period / rigid_tumbling with one field changed.
-#include "springs_deck_runner.hpp"
+#include "example_deck_runner.hpp"
 
 #include <filesystem>
 #include <fstream>
