@@ -24,9 +24,10 @@ void SpringAxialGroup::compute_forces(const StepContext& step, const NodalState&
   const SpringDofLaw& law = prop.dofs[0];
   const double dt = step.dt_prev;
   const std::size_t nc = n_chunks(n_elements);
-  std::vector<double> chunk_dt(nc, std::numeric_limits<double>::infinity());
-  std::vector<Index> chunk_el(nc, kNoIndex);
-  std::vector<std::uint8_t> chunk_broke(nc, 0);
+  ChunkScratch& scratch = chunk_scratch(nc);
+  std::vector<double>& chunk_dt = scratch.dt;
+  std::vector<Index>& chunk_el = scratch.el;
+  std::vector<std::uint8_t>& chunk_broke = scratch.broke;
 #pragma omp parallel for schedule(static) if (nc > 1)
   for (std::size_t c = 0; c < nc; ++c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);

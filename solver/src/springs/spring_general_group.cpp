@@ -12,9 +12,10 @@ void SpringGeneralGroup::compute_forces(const StepContext& step, const NodalStat
   const double dt = step.dt_prev;
   const Eigen::Matrix3d& E = prop.skew;  // columns: frame axes
   const std::size_t nc = n_chunks(n_elements);
-  std::vector<double> chunk_dt(nc, std::numeric_limits<double>::infinity());
-  std::vector<Index> chunk_el(nc, kNoIndex);
-  std::vector<std::uint8_t> chunk_broke(nc, 0);
+  ChunkScratch& scratch = chunk_scratch(nc);
+  std::vector<double>& chunk_dt = scratch.dt;
+  std::vector<Index>& chunk_el = scratch.el;
+  std::vector<std::uint8_t>& chunk_broke = scratch.broke;
   if (rotation.size() != n_elements) rotation.assign(n_elements, Eigen::Vector3d::Zero());
 #pragma omp parallel for schedule(static) if (nc > 1)
   for (std::size_t c = 0; c < nc; ++c) {

@@ -154,4 +154,11 @@ std::optional<ThProbe> SpringGroup::th_probe(ThKind kind, std::int64_t id,
   return std::nullopt;
 }
 
+SpringGroup::ChunkScratch& SpringGroup::chunk_scratch(std::size_t nc) {
+  scratch_.dt.assign(nc, std::numeric_limits<double>::infinity());
+  scratch_.el.assign(nc, kNoIndex);
+  scratch_.broke.assign(nc, 0);
+  return scratch_;
+}
+
 }  // namespace hbm::solver::springs

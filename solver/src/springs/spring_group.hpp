@@ -82,6 +82,15 @@ class SpringGroup : public ElementGroup {
   void finish_step(const std::vector<double>& chunk_dt, const std::vector<Index>& chunk_el,
                    const std::vector<std::uint8_t>& chunk_broke, GroupStepResult& result);
   std::vector<std::uint8_t> reported_broken_;
+  // Per-chunk critical step, its element and the broke flag, reused every cycle (no
+  // allocation in the step): chunk_scratch(nc) resets them for nc chunks.
+  struct ChunkScratch {
+    std::vector<double> dt;
+    std::vector<Index> el;
+    std::vector<std::uint8_t> broke;
+  };
+  ChunkScratch& chunk_scratch(std::size_t nc);
+  ChunkScratch scratch_;
 };
 
 }  // namespace hbm::solver::springs
