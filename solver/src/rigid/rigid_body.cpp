@@ -2,6 +2,7 @@
 // /RBODY constraint: gather, symplectic rotation update, rigid secondaries (see
 // rigid_body.hpp for the scheme and its reference).
 #include "rigid/rigid_body.hpp"
+#include "rigid/nodal_vec3.hpp"
 
 #include "rigid/rigid_rotation.hpp"
 
@@ -14,14 +15,6 @@ namespace hbm::solver::rigid {
 
 namespace {
 
-Eigen::Vector3d load(const Vec3Soa& a, Index i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {a.x[k], a.y[k], a.z[k]};
-}
-void store(Vec3Soa& a, Index i, const Eigen::Vector3d& v) {
-  const auto k = static_cast<std::size_t>(i);
-  a.x[k] = v.x(); a.y[k] = v.y(); a.z[k] = v.z();
-}
 // Rotation vector of a rotation matrix (log map), accurate for small angles.
 Eigen::Vector3d rotation_vector(const Eigen::Matrix3d& R) {
   Eigen::Quaterniond q(R);

@@ -29,6 +29,7 @@
 // its work is counted half at t^n, half at t^{n+1}. Without the split a whole body
 // stopping in one step shows its full kinetic energy as a one-step energy error.
 #include "rigid/rigid_body.hpp"
+#include "rigid/nodal_vec3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,14 +38,6 @@ namespace hbm::solver::rigid {
 
 namespace {
 
-Eigen::Vector3d load(const Vec3Soa& a, Index i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {a.x[k], a.y[k], a.z[k]};
-}
-void store(Vec3Soa& a, Index i, const Eigen::Vector3d& v) {
-  const auto k = static_cast<std::size_t>(i);
-  a.x[k] = v.x(); a.y[k] = v.y(); a.z[k] = v.z();
-}
 Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   Eigen::Matrix3d S;
   S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
