@@ -26,6 +26,7 @@ struct ShellHarness {
   std::vector<std::array<double, 6>> reaction;  // reaction on prescribed DOFs, last step
   ShellGroupData g;
   std::vector<double> sfx, sfy, sfz, smx, smy, smz;  // slot buffers
+  std::vector<std::int32_t> all;                     // element list handed to the kernel
   double time = 0, dt_last = 0;
   double w_ext = 0;       // external work (loads + reactions of prescribed DOFs)
   double damping = 0;     // mass-proportional damping coefficient [1/time]
@@ -83,8 +84,12 @@ struct ShellHarness {
   // Element forces at the current state (dt: step the velocities acted over), assembled.
   ShellKernelTotals forces(double dt) {
     const ShellSlotOut out{sfx.data(), sfy.data(), sfz.data(), smx.data(), smy.data(), smz.data()};
-    ShellKernelTotals tot = g.kind == ShellKind::QuadBT ? quad_bt_forces(g, view(), out, dt, 0, g.n)
-                                                         : tria_dkt_forces(g, view(), out, dt, 0, g.n);
+    if (all.size() != g.n) {
+      all.resize(g.n);
+      for (std::size_t e = 0; e < g.n; ++e) all[e] = static_cast<std::int32_t>(e);
+    }
+    ShellKernelTotals tot = g.kind == ShellKind::QuadBT ? quad_bt_forces(g, view(), out, dt, all)
+                                                         : tria_dkt_forces(g, view(), out, dt, all);
     for (auto& a : f) a.fill(0.0);
     const std::size_t nslot = g.n * static_cast<std::size_t>(g.nodes_per_element);
     for (std::size_t s = 0; s < nslot; ++s) {

@@ -132,6 +132,8 @@ void compute_element_forces(Model& m, CycleState& c) {
   std::vector<std::size_t>& small = c.small_groups;
   small.clear();
   for (std::size_t g = 0; g < ng; ++g) {
+    // All elements inside rigid bodies: slots stay zero, nothing to compute.
+    if (m.groups[g]->all_deactivated()) continue;
     if (share_small && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks)
       small.push_back(g);
     else
@@ -160,12 +162,13 @@ void compute_element_forces(Model& m, CycleState& c) {
 
 bool AssemblyPlan::built_for(const Model& m) const {
   return n_groups == m.groups.size() && start.size() == m.incidence_start.size() &&
-         entries.size() == m.incidence_slot.size();
+         n_incidence == m.incidence_slot.size();
 }
 
 void AssemblyPlan::build(const Model& m) {
   const std::size_t nn = m.incidence_start.empty() ? 0 : m.incidence_start.size() - 1;
   n_groups = m.groups.size();
+  n_incidence = m.incidence_slot.size();
   start.assign(nn + 1, 0);
   rot_start.assign(nn + 1, 0);
   entries.clear();
@@ -175,6 +178,7 @@ void AssemblyPlan::build(const Model& m) {
     for (std::int64_t j = m.incidence_start[i]; j < m.incidence_start[i + 1]; ++j) {
       const Entry e{static_cast<std::uint32_t>(m.incidence_group[static_cast<std::size_t>(j)]),
                     static_cast<std::uint32_t>(m.incidence_slot[static_cast<std::size_t>(j)])};
+      if (m.groups[e.group]->all_deactivated()) continue;  // zero slots
       entries.push_back(e);
       if (m.groups[e.group]->has_rotation_slots()) rot_entries.push_back(e);
     }
@@ -188,7 +192,8 @@ void AssemblyPlan::build(const Model& m) {
 // in memory order and the nodal arrays stay in cache; each node receives its slots in
 // (group, element) order, the order of the gather, so the sums are the same bits.
 // Several threads (large models): node-ordered gather through the packed plan (each
-// node summed by one thread).
+// node summed by one thread). Groups whose elements all lie inside rigid bodies (zero
+// slots) are left out of both.
 void assemble_nodal_forces(Model& m, CycleState& c) {
   const PhaseTimer t0;
   NodalState& n = m.nodes;
@@ -205,6 +210,7 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
     for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a, a + nn, 0.0);
     for (const auto& gp : m.groups) {
       const ElementGroup& g = *gp;
+      if (g.all_deactivated()) continue;  // zero slots (inside rigid bodies)
       const Index* conn = g.connectivity.data();
       const std::size_t ns = g.connectivity.size();
       const double *gfx = g.slot_force.x.data(), *gfy = g.slot_force.y.data(), *gfz = g.slot_force.z.data(),

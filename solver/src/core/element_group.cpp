@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Default behaviour shared by all element groups: slot allocation, VTK cell of an
-// element (duplicate nodes of degenerate bricks collapsed to wedge / tetra), and the
-// default cell fields.
+// Default behaviour shared by all element groups: slot allocation, deactivation of the
+// elements inside a rigid body, VTK cell of an element (duplicate nodes of degenerate
+// bricks collapsed to wedge / tetra), and the default cell fields.
 #include "hbm/solver/element_group.hpp"
 
 #include <algorithm>
@@ -17,6 +17,23 @@ void ElementGroup::allocate_slots(bool rotational) {
     slot_rot_stiffness.assign(n_slots, 0.0);
   }
   if (alive.size() != n_elements) alive.assign(n_elements, 1);
+}
+
+void ElementGroup::deactivate(std::span<const std::uint8_t> inside) {
+  const std::size_t npe = nodes_per_element;
+  for (std::size_t e = 0; e < n_elements && e < inside.size(); ++e) {
+    if (!inside[e] || !alive[e]) continue;
+    alive[e] = 0;
+    ++n_deactivated;
+    for (std::size_t s = e * npe; s < (e + 1) * npe; ++s) {
+      slot_force.x[s] = slot_force.y[s] = slot_force.z[s] = 0.0;
+      slot_stiffness[s] = 0.0;
+      if (has_rotation_slots()) {
+        slot_moment.x[s] = slot_moment.y[s] = slot_moment.z[s] = 0.0;
+        slot_rot_stiffness[s] = 0.0;
+      }
+    }
+  }
 }
 
 VtkCellType ElementGroup::vtk_cell(std::size_t e, Index* nodes, int& n_nodes) const {

@@ -6,7 +6,9 @@
 // the secondaries and the main node; 2: from the secondaries only, main node mass added
 // at the centre; the main node is moved to the centre. Ispher = 1: spherical inertia
 // (mean of the principal moments). Elements whose nodes all belong to one body are
-// deactivated (they would only add stiffness, as in Radioss). Not supported (deck
+// deactivated, as in OpenRadioss (/RBODY: "all the elements belonging to the rigid body
+// are deactivated"): ElementGroup::deactivate, no force, energy or time step from them,
+// their mass stays in the body. Not supported (deck
 // error naming the field): sensors, skews, ICoG 3 and 4, nested bodies.
 // Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
@@ -102,22 +104,26 @@ void build_rigid_bodies(BuildContext& ctx) {
     bodies.push_back(body.get());
     ctx.add_constraint(std::move(body));
   }
-  // Deactivate elements lying entirely inside one body.
+  // Deactivate elements lying entirely inside one body (ElementGroup::deactivate).
   if (bodies.empty()) return;
   std::vector<std::size_t> deactivated(bodies.size(), 0);
+  std::vector<std::uint8_t> inside;
   for (const auto& g : ctx.model().groups) {
     const std::size_t npe = g->nodes_per_element;
+    inside.assign(g->n_elements, 0);
+    bool any = false;
     for (std::size_t e = 0; e < g->n_elements; ++e) {
       const std::int32_t b = body_of[static_cast<std::size_t>(g->connectivity[e * npe])];
-      if (b < 0) continue;
-      bool inside = true;
-      for (std::size_t k = 1; k < npe && inside; ++k)
-        inside = body_of[static_cast<std::size_t>(g->connectivity[e * npe + k])] == b;
-      if (inside && g->alive[e]) {
-        g->alive[e] = 0;
-        ++deactivated[static_cast<std::size_t>(b)];
-      }
+      if (b < 0 || !g->alive[e]) continue;
+      bool in = true;
+      for (std::size_t k = 1; k < npe && in; ++k)
+        in = body_of[static_cast<std::size_t>(g->connectivity[e * npe + k])] == b;
+      if (!in) continue;
+      inside[e] = 1;
+      any = true;
+      ++deactivated[static_cast<std::size_t>(b)];
     }
+    if (any) g->deactivate(inside);
   }
   const auto cards = ctx.starter().cards_of("/RBODY");
   for (std::size_t b = 0; b < bodies.size(); ++b)

@@ -19,6 +19,8 @@ Index ShellElementGroup::initialize(const NodalState& nodes) {
   allocate_slots(true);
   slot_mass.assign(n_elements, 0.0);
   slot_inertia.assign(n_elements, 0.0);
+  computed_.resize(n_elements);
+  for (std::size_t e = 0; e < n_elements; ++e) computed_[e] = static_cast<std::int32_t>(e);
   chunk_totals_.assign(n_chunks(n_elements), {});
   Index bad = kNoIndex;
   for (std::size_t e = 0; e < n_elements; ++e) {
@@ -60,15 +62,17 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
   const ShellSlotOut out{slot_force.x.data(),  slot_force.y.data(),  slot_force.z.data(),
                          slot_moment.x.data(), slot_moment.y.data(), slot_moment.z.data()};
   const double dt = step.dt_prev;
+  const std::size_t n_computed = computed_.size();
   const std::size_t nch = chunk_totals_.size();
   const std::size_t npe = nodes_per_element;
   const bool quad = data.kind == ShellKind::QuadBT;
 #pragma omp parallel for schedule(static) if (nch > 1)
   for (std::size_t ch = 0; ch < nch; ++ch) {
-    const std::size_t e0 = ch * kChunk, e1 = std::min(n_elements, e0 + kChunk);
-    chunk_totals_[ch] = quad ? quad_bt_forces(data, nv, out, dt, e0, e1)
-                             : tria_dkt_forces(data, nv, out, dt, e0, e1);
-    for (std::size_t e = e0; e < e1; ++e) {
+    const std::size_t k0 = ch * kChunk, k1 = std::min(n_computed, k0 + kChunk);
+    const std::span<const std::int32_t> list(computed_.data() + k0, k1 - k0);
+    chunk_totals_[ch] = quad ? quad_bt_forces(data, nv, out, dt, list) : tria_dkt_forces(data, nv, out, dt, list);
+    for (const std::int32_t el : list) {
+      const auto e = static_cast<std::size_t>(el);
       const double dte = data.dt_elem[e];
       const bool live = !data.deleted[e] && dte < 1e299;
       const double k = live ? 2.0 * slot_mass[e] / (dte * dte) : 0.0;
@@ -90,16 +94,26 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
     if (result.inverted_element == kNoIndex && t.inverted >= 0)
       result.inverted_element = static_cast<Index>(t.inverted);
     if (t.newly_deleted) {
-      const std::size_t e0 = ch * kChunk, e1 = std::min(n_elements, e0 + kChunk);
-      for (std::size_t e = e0; e < e1; ++e)
+      const std::size_t k0 = ch * kChunk, k1 = std::min(n_computed, k0 + kChunk);
+      for (std::size_t k = k0; k < k1; ++k) {
+        const auto e = static_cast<std::size_t>(computed_[k]);
         if (data.deleted[e] && alive[e]) {
           alive[e] = 0;
           ++n_eroded;
           newly_eroded.push_back(static_cast<Index>(e));
           energy.eroded += data.eint[e];
         }
+      }
     }
   }
+}
+
+void ShellElementGroup::deactivate(std::span<const std::uint8_t> inside) {
+  ElementGroup::deactivate(inside);
+  computed_.clear();
+  for (std::size_t e = 0; e < n_elements; ++e)
+    if (e >= inside.size() || !inside[e]) computed_.push_back(static_cast<std::int32_t>(e));
+  chunk_totals_.assign(n_chunks(computed_.size()), {});
 }
 
 void ShellElementGroup::cell_field(CellField field, std::span<double> out) const {

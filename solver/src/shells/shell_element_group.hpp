@@ -2,7 +2,7 @@
 // Engine adaptor of the shell kernels: an ElementGroup (docs/engine-design.md section 3)
 // holding one ShellGroupData (the elements of one part, /SHELL -> Belytschko-Tsay quads,
 // /SH3N -> CST+DKT triangles). compute_forces runs the kernel over fixed chunks of
-// kChunk elements (OpenMP), reduces energies and time steps in chunk order, fills the
+// kChunk computed elements (OpenMP; elements inside a rigid body are not computed), reduces energies and time steps in chunk order, fills the
 // nodal stiffness slots (k = 2 m_slot / dt_e^2, rotational 2 I_slot / dt_e^2) and
 // reports deleted elements to the core.
 #pragma once
@@ -30,8 +30,13 @@ class ShellElementGroup final : public ElementGroup {
                       GroupStepResult& result) override;
   bool solid_cells() const override { return false; }
   void cell_field(CellField field, std::span<double> out) const override;
+  // Drops the elements inside a rigid body from the computed list.
+  void deactivate(std::span<const std::uint8_t> inside) override;
 
  private:
+  // Elements computed each cycle (all but the deactivated ones), in element order; the
+  // chunks of kChunk run over this list.
+  std::vector<std::int32_t> computed_;
   std::vector<ShellKernelTotals> chunk_totals_;
 };
 

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace hbm::solver::shells {
@@ -78,13 +79,14 @@ struct ShellKernelTotals {
   std::size_t newly_deleted = 0;  // elements deleted in this call
 };
 
-// Element forces of elements [e0, e1): reads the nodal view, updates the element state
-// with the step dt (the step the velocities act over), writes the slots and energies.
+// Element forces of the listed elements (indices in increasing order): reads the nodal
+// view, updates the element state with the step dt (the step the velocities act over),
+// writes the slots and energies. Slots of elements not listed are not touched.
 ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
-                                 const ShellSlotOut& out, double dt, std::size_t e0,
-                                 std::size_t e1);
+                                 const ShellSlotOut& out, double dt,
+                                 std::span<const std::int32_t> elements);
 ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
-                                  const ShellSlotOut& out, double dt, std::size_t e0,
-                                  std::size_t e1);
+                                  const ShellSlotOut& out, double dt,
+                                  std::span<const std::int32_t> elements);
 
 }  // namespace hbm::solver::shells

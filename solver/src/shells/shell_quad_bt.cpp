@@ -34,8 +34,8 @@
 namespace hbm::solver::shells {
 
 ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
-                                 const ShellSlotOut& out, double dt, std::size_t e0,
-                                 std::size_t e1) {
+                                 const ShellSlotOut& out, double dt,
+                                 std::span<const std::int32_t> elements) {
   ShellKernelTotals tot;
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
@@ -45,7 +45,8 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
   const double cwave = mat.plate_wave_speed();
   static constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
 
-  for (std::size_t e = e0; e < e1; ++e) {
+  for (const std::int32_t el : elements) {
+    const auto e = static_cast<std::size_t>(el);
     const std::size_t s0 = e * 4;
     auto zero_slots = [&] {
       for (std::size_t s = s0; s < s0 + 4; ++s)

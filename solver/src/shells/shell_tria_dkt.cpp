@@ -57,8 +57,8 @@ constexpr int kSide[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 }  // namespace
 
 ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
-                                 const ShellSlotOut& out, double dt, std::size_t e0,
-                                 std::size_t e1) {
+                                 const ShellSlotOut& out, double dt,
+                                 std::span<const std::int32_t> elements) {
   ShellKernelTotals tot;
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
@@ -67,7 +67,8 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
   const double E = mat.young(), nu = mat.poisson();
   const double cwave = mat.plate_wave_speed();
 
-  for (std::size_t e = e0; e < e1; ++e) {
+  for (const std::int32_t el : elements) {
+    const auto e = static_cast<std::size_t>(el);
     const std::size_t s0 = e * 3;
     auto zero_slots = [&] {
       for (std::size_t s = s0; s < s0 + 3; ++s)

@@ -49,6 +49,8 @@ struct AssemblyPlan {
   std::vector<std::uint32_t> rot_start;  // n_nodes + 1, rotational slots of node i
   std::vector<Entry> rot_entries;
   std::size_t n_groups = 0;
+  std::size_t n_incidence = 0;  // incidence entries it was built from (slots of groups
+                                // whose elements are all deactivated are left out)
   bool built_for(const Model& m) const;
   void build(const Model& m);
 };

@@ -91,6 +91,20 @@ class ElementGroup : public ThSource {
   void allocate_slots(bool rotational = false);
   bool has_rotation_slots() const { return !slot_moment.x.empty(); }
 
+  // --- elements inside a rigid body ---------------------------------------------------
+  // Elements whose nodes all belong to one /RBODY are deactivated by the rigid-body
+  // builder, as in OpenRadioss ("all the elements belonging to the rigid body are
+  // deactivated"): alive = 0, zero slots (force, moment, stiffness), never computed
+  // again, so they give no force, no energy, no time step and no mass scaling; their
+  // mass stays on the nodes (lumped at build, hence in the body). The core skips a group
+  // whose elements are all deactivated (compute_forces and assembly).
+  std::size_t n_deactivated = 0;
+  bool all_deactivated() const { return n_elements > 0 && n_deactivated == n_elements; }
+  // Deactivates every element e with inside[e] != 0 (size n_elements; call once per group,
+  // after the slots are allocated). Groups override it to drop the elements from their
+  // kernels (they must call the base); the default leaves the kernel to mask alive = 0.
+  virtual void deactivate(std::span<const std::uint8_t> inside);
+
   // --- behaviour -------------------------------------------------------------------------
   // Formulation name for listings and the bench, e.g. "brick8 FB 1-point".
   virtual std::string_view formulation() const = 0;
