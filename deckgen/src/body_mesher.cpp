@@ -191,8 +191,12 @@ class Builder {
   void build_shoulders();
   void build_head();
   void build_limbs();
+  // Shell envelope of a limb segment along p0 -> p1 (sections of limb_sections.csv `table`);
+  // with clear_of, it begins where its section lies outside that closed surface, and not
+  // before the axis fraction f_min.
   std::vector<int> limb_envelope(const std::string& link, const std::string& table, const Eigen::Vector3d& p0,
-                                 const Eigen::Vector3d& p1, int part_index);
+                                 const Eigen::Vector3d& p1, int part_index, const TriSurface* clear_of = nullptr,
+                                 double f_min = -1e9);
   void build_contacts();
   void finalize_rigid_bodies();
 
@@ -578,11 +582,28 @@ void Builder::build_pelvis() {
     int main = m_.add_node(c / static_cast<double>(nodes.size() - 1));
     rigid("acetabulum_" + side, "pelvis", main, nodes);
     joint_node_["hip_pelvis_" + side] = joint;
+    // Greater trochanter: the torso nodes at the bone (within kTrochanterBone of the
+    // landmark, the lateral bony surface, and medial of it) join the femur rigid body; the
+    // flesh and skin lateral of it stay deformable: 31 +- 11.5 mm of trochanteric soft tissue in men
+    // (Nielson et al. 2009, J Clin Endocrinol Metab 94:491, DXA, MrOS), the skin at the
+    // seated hip half-breadth over it (torso_sections.csv widest_forward_mm at z = 0).
+    constexpr double kTrochanterBone = 30.0;  // mm: trochanter and femoral neck medial of the landmark (est)
+    std::set<int> skin_nodes;
+    for (const auto& q : torso_skin_) skin_nodes.insert(q.begin(), q.end());
     std::vector<int> troch;
     Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
-    for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n)
-      if ((m_.nodes[static_cast<std::size_t>(n)] - gt).norm() <= 30 && !rigid_of_.count(n)) troch.push_back(n);
-    if (troch.empty()) throw std::runtime_error("pelvis: no flesh node within 30 mm of greater_trochanter_" + side);
+    for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n) {
+      const Eigen::Vector3d& x = m_.nodes[static_cast<std::size_t>(n)];
+      bool medial = std::abs(x.y()) <= std::abs(gt.y());  // at the bone, not in the tissue lateral of it
+      if ((x - gt).norm() <= kTrochanterBone && medial && !rigid_of_.count(n)) troch.push_back(n);
+    }
+    if (troch.empty())
+      throw std::runtime_error("pelvis: no torso node within " + std::to_string(kTrochanterBone) + " mm of greater_trochanter_" + side +
+                               " (pelvis_landmarks.csv)");
+    for (int n : troch)
+      if (skin_nodes.count(n))
+        throw std::runtime_error("pelvis: skin node " + std::to_string(n + 1) + " within " + std::to_string(kTrochanterBone) +
+                                 " mm of greater_trochanter_" + side + ": no deformable tissue over the trochanter (torso_sections.csv)");
     rb_nodes_["femur_" + side] = troch;
   }
 }
@@ -738,7 +759,7 @@ void Builder::build_head() {
 // --- limbs ---------------------------------------------------------------------------------
 
 std::vector<int> Builder::limb_envelope(const std::string& link, const std::string& table, const Eigen::Vector3d& p0,
-                                        const Eigen::Vector3d& p1, int part_index) {
+                                        const Eigen::Vector3d& p1, int part_index, const TriSurface* clear_of, double f_min) {
   const auto& secs = g_.limbs.at(table);
   const double Lseg = (p1 - p0).norm();
   Eigen::Vector3d a = (p1 - p0) / Lseg;
@@ -746,13 +767,9 @@ std::vector<int> Builder::limb_envelope(const std::string& link, const std::stri
   if (ew.norm() < 0.2) ew = Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ().dot(a) * a;
   ew.normalize();
   Eigen::Vector3d ed = a.cross(ew);
-  double f0 = secs.front().fraction, f1 = secs.back().fraction;
-  int rings = std::max(2, static_cast<int>(std::ceil((f1 - f0) * Lseg / o_.limb_ring_spacing)) + 1);
   const int na = o_.limb_around;
-  std::vector<int> nodes;
-  std::vector<std::vector<int>> ring_ids;
-  for (int r = 0; r < rings; ++r) {
-    double f = f0 + (f1 - f0) * r / (rings - 1);
+  // Ring of the section at fraction f along the axis, in the posture.
+  auto ring_at = [&](double f) {
     std::size_t i = 1;
     while (i + 1 < secs.size() && secs[i].fraction < f) ++i;
     const LimbSection &s0 = secs[i - 1], &s1 = secs[i];
@@ -761,11 +778,44 @@ std::vector<int> Builder::limb_envelope(const std::string& link, const std::stri
     double hd = s0.half_depth + t * (s1.half_depth - s0.half_depth);
     double ex = s0.exponent + t * (s1.exponent - s0.exponent);
     Eigen::Vector3d c = p0 + f * Lseg * a;
-    std::vector<int> ids;
+    std::vector<Eigen::Vector3d> pts;
     for (int k = 0; k < na; ++k) {
       double th = 2 * M_PI * k / na;
-      Eigen::Vector3d p = c + ed * hd * sgnpow(std::cos(th), 2.0 / ex) + ew * hw * sgnpow(std::sin(th), 2.0 / ex);
-      int n = m_.add_node(moved(link, p));
+      pts.push_back(moved(link, c + ed * hd * sgnpow(std::cos(th), 2.0 / ex) + ew * hw * sgnpow(std::sin(th), 2.0 / ex)));
+    }
+    return pts;
+  };
+  double f0 = secs.front().fraction, f1 = secs.back().fraction;
+  if (clear_of) {
+    // The envelope begins where its section has left the torso: proximal of it the limb's
+    // tissue is torso flesh (deformable), and a rigid envelope inside that flesh would be
+    // met through it (the lateral hip over the greater trochanter, issue #8). First
+    // fraction, in 1 mm steps, whose ring lies outside the torso surface by at least
+    // kEnvelopeClearance (twice the 1-2 mm contact gaps used on the skin).
+    constexpr double kEnvelopeClearance = 4.0;
+    const double step = 1.0 / Lseg;
+    double f = std::max(f0, f_min);
+    for (; f < f1; f += step) {
+      auto pts = ring_at(f);
+      auto in = inside_surface(*clear_of, pts);
+      auto dist = distance_to_surface(*clear_of, pts);
+      bool clear = true;
+      for (std::size_t k = 0; k < pts.size(); ++k) clear = clear && !in[k] && dist[k] >= kEnvelopeClearance;
+      if (clear) break;
+    }
+    if (f >= 0.5 * (f0 + f1))
+      throw std::runtime_error("limb envelope " + link + ": its section stays inside the torso up to fraction " + std::to_string(f) +
+                               " (check limb_sections.csv " + table + " rows and torso_sections.csv)");
+    f0 = f;
+  }
+  int rings = std::max(2, static_cast<int>(std::ceil((f1 - f0) * Lseg / o_.limb_ring_spacing)) + 1);
+  std::vector<int> nodes;
+  std::vector<std::vector<int>> ring_ids;
+  for (int r = 0; r < rings; ++r) {
+    double f = f0 + (f1 - f0) * r / (rings - 1);
+    std::vector<int> ids;
+    for (const auto& p : ring_at(f)) {
+      int n = m_.add_node(p);
       ids.push_back(n);
       nodes.push_back(n);
     }
@@ -781,6 +831,8 @@ std::vector<int> Builder::limb_envelope(const std::string& link, const std::stri
 }
 
 void Builder::build_limbs() {
+  // The thigh envelope starts clear of the torso (buttock and lateral hip are torso flesh).
+  const TriSurface torso_surface = triangulate(m_.nodes, hex_boundary_faces(torso_hexes_));
   const double env_t = g_.shell_sections.at("envelope").total_thickness;
   int env_mat = material("envelope");
   for (const char* s : {"r", "l"}) {
@@ -799,7 +851,14 @@ void Builder::build_limbs() {
     auto hn = limb_envelope("humerus_" + side, "humerus", shoulder, elbow, hp);
     auto fn = limb_envelope("forearm_" + side, "forearm", elbow, wrist, fp);
     Eigen::Vector3d hip = fem.joint_origin, knee = tib.joint_origin;
-    auto tn = limb_envelope("femur_" + side, "femur", hip, knee, tp);
+    // The rigid thigh envelope begins distal of the trochanteric region (the lateral hip:
+    // greater trochanter to below the lesser trochanter, kTrochantericRegion along the
+    // femur, est), which is deformable torso flesh over the trochanter (issue #8: a lateral
+    // impact on the trochanter must meet soft tissue, not the rigid thigh).
+    constexpr double kTrochantericRegion = 80.0;  // mm
+    const Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
+    const double f_troch = ((gt - hip).dot((knee - hip).normalized()) + kTrochantericRegion) / (knee - hip).norm();
+    auto tn = limb_envelope("femur_" + side, "femur", hip, knee, tp, &torso_surface, f_troch);
     Eigen::Vector3d ankle = g_.limb_points.at("ankle_" + side);
     auto ln = limb_envelope("tibia_" + side, "tibia", knee, ankle, lp);
     Eigen::Vector3d heel = g_.limb_points.at("heel_" + side), toe = g_.limb_points.at("toe_" + side);

@@ -5,6 +5,7 @@
 #include "hbm/deckgen/table.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace hbm::deckgen {
@@ -35,6 +36,7 @@ TrunkSection SectionTable::at(double z) const {
       s.half_depth = l(a.half_depth, b.half_depth);
       s.exponent = l(a.exponent, b.exponent);
       s.back = l(a.back, b.back);
+      s.widest_forward = l(a.widest_forward, b.widest_forward);
       s.wall_half_width = l(a.wall_half_width, b.wall_half_width);
       s.wall_depth = l(a.wall_depth, b.wall_depth);
       s.wall_exponent = l(a.wall_exponent, b.wall_exponent);
@@ -84,6 +86,12 @@ SectionTable read_sections(const std::filesystem::path& file) {
     c.half_depth = t.number_in(r, "half_depth_mm", 5, 500);
     c.exponent = t.number_in(r, "exponent", 1.5, 10);
     c.back = t.number_in(r, "back_mm", 5, 300);
+    // Optional: the widest point of the skin curve ahead of its depth centre (0: symmetric).
+    if (t.has_column("widest_forward_mm") && !t.blank(r, "widest_forward_mm")) {
+      c.widest_forward = t.number(r, "widest_forward_mm");
+      if (std::abs(c.widest_forward) > 0.6 * c.half_depth)
+        t.fail(r, "widest_forward_mm", "the widest point must lie within 0.6 half_depth_mm of the depth centre");
+    }
     c.wall_half_width = t.number_in(r, "wall_half_width_mm", 5, 500);
     c.wall_depth = t.number_in(r, "wall_depth_mm", 5, 500);
     c.wall_exponent = t.number_in(r, "wall_exponent", 1.5, 10);
@@ -280,6 +288,7 @@ std::vector<SegmentTarget> read_targets(const std::filesystem::path& file) {
     else if (s.cog_mode != "link" && s.cog_mode != "none") t.fail(r, "cog_mode", "expected link, axis or none");
     s.check_mass = t.integer(r, "check_mass") != 0;
     s.check_cog = t.integer(r, "check_cog") != 0;
+    if (t.has_column("neck_share_kg") && !t.blank(r, "neck_share_kg")) s.neck_share = t.number_in(r, "neck_share_kg", 0, 5);
     s.source = t.text(r, "source");
     if (s.source.empty()) t.fail(r, "source", "every target needs its source");
     out.push_back(s);

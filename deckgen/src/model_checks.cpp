@@ -198,6 +198,24 @@ V3 SegmentCuts::axis_point(const std::string& name) const {
   throw std::logic_error("SegmentCuts: the trunk centreline does not cross the " + name + " plane");
 }
 
+V3 lower_neck_centroid(const FeModel& m, const SegmentCuts& cuts, const ModelLandmarks& lm, double share) {
+  std::vector<std::pair<V3, double>> pts;
+  segment_points(m, cuts, "neck", pts);
+  const V3 base = lm.boundary_centres.at("T1_upper");
+  const V3 up = (lm.boundary_centres.at("C0") - base).normalized();
+  std::stable_sort(pts.begin(), pts.end(), [&](const auto& a, const auto& b) { return (a.first - base).dot(up) < (b.first - base).dot(up); });
+  double mass = 0;
+  V3 moment = V3::Zero();
+  for (const auto& [p, w] : pts) {
+    double take = std::min(w, share - mass);
+    if (take <= 0) break;
+    mass += take;
+    moment += take * p;
+  }
+  if (mass < share * (1 - 1e-9)) throw std::logic_error("lower_neck_centroid: the mesh neck weighs less than the share");
+  return moment / mass;
+}
+
 void assign_rigid_body_masses(FeModel& m, const GeometrySources& g, const ModelLandmarks& lm) {
   SegmentCuts cuts(lm, g);
   for (auto& rb : m.rigid_bodies) {
@@ -454,6 +472,12 @@ MassReport mass_check(const FeModel& m, const GeometrySources& g, const ModelLan
         b = cuts.axis_point(bottom);
       }
       row.target_cog = a + t.axis_fraction * (b - a);
+      if (t.neck_share > 0) {
+        // The reference segment (mass + neck_share) has its CoM at the de Leva point; the
+        // mesh segment is that less the lower neck the mesh holds in its neck segment.
+        V3 c = lower_neck_centroid(m, cuts, lm, t.neck_share);
+        row.target_cog = ((t.mass + t.neck_share) * row.target_cog - t.neck_share * c) / t.mass;
+      }
       row.axis = (b - a).normalized();
       row.axis_length = (b - a).norm();
     } else {

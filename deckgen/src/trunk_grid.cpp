@@ -17,8 +17,11 @@ Eigen::Vector3d tri_cross(const Eigen::Vector3d& a, const Eigen::Vector3d& b, co
 
 }  // namespace
 
-Eigen::Vector2d superellipse_half_point(double x_c, double hd, double hw, double n, double s) {
-  // Polyline of the left half, parameter t in [0, pi]; arc length by summation.
+Eigen::Vector2d superellipse_half_point(double x_c, double hd, double hw, double n, double s, double widest_forward) {
+  // Polyline of the left half, parameter t in [0, pi]; arc length by summation. The widest
+  // point sits widest_forward ahead of the centre: the front quarter spans hd - w, the back
+  // quarter hd + w (two superellipse quarters joined at the widest point, same tangent).
+  const double w = widest_forward;
   constexpr int kSamples = 360;
   static thread_local std::vector<Eigen::Vector2d> pts;
   static thread_local std::vector<double> len;
@@ -26,7 +29,8 @@ Eigen::Vector2d superellipse_half_point(double x_c, double hd, double hw, double
   len.resize(kSamples + 1);
   for (int i = 0; i <= kSamples; ++i) {
     double t = M_PI * i / kSamples;
-    pts[static_cast<std::size_t>(i)] = {x_c + hd * sgnpow(std::cos(t), 2.0 / n), hw * sgnpow(std::sin(t), 2.0 / n)};
+    double c = std::cos(t);
+    pts[static_cast<std::size_t>(i)] = {x_c + w + (c >= 0 ? hd - w : hd + w) * sgnpow(c, 2.0 / n), hw * sgnpow(std::sin(t), 2.0 / n)};
     len[static_cast<std::size_t>(i)] = i == 0 ? 0.0 : len[static_cast<std::size_t>(i - 1)] + (pts[static_cast<std::size_t>(i)] - pts[static_cast<std::size_t>(i - 1)]).norm();
   }
   double target = s * len.back();
@@ -80,7 +84,8 @@ TrunkGrid::TrunkGrid(FeModel& model, const SectionTable& sections, std::vector<G
         Eigen::Vector2d q = superellipse_half_point(lv.x_spine + sw.wall_depth / 2, sw.wall_depth / 2, sw.wall_half_width, sw.wall_exponent, s);
         w = {q.x(), q.y(), level_height(l, q.x(), q.y())};
         TrunkSection sk = sections_.at(k.z());
-        Eigen::Vector2d r = superellipse_half_point(lv.x_spine - sk.back + sk.half_depth, sk.half_depth, sk.half_width, sk.exponent, s);
+        Eigen::Vector2d r = superellipse_half_point(lv.x_spine - sk.back + sk.half_depth, sk.half_depth, sk.half_width, sk.exponent, s,
+                                                    sk.widest_forward);
         k = {r.x(), r.y(), level_height(l, r.x(), r.y())};
       }
       wall[static_cast<std::size_t>(j)] = w;

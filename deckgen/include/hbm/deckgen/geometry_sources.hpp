@@ -27,6 +27,7 @@ struct VertebraLandmarks {
 struct TrunkSection {
   double z = 0;
   double half_width = 0, half_depth = 0, exponent = 2, back = 0;
+  double widest_forward = 0;  // mm: skin's widest point ahead of the depth centre (optional column widest_forward_mm)
   double wall_half_width = 0, wall_depth = 0, wall_exponent = 2;
 };
 
@@ -82,6 +83,10 @@ struct SegmentTarget {
   std::string cog_mode;  // link | axis
   double axis_fraction = 0;
   bool check_mass = true, check_cog = false;
+  // Mass of the reference segment that the mesh holds in its neck segment (optional column
+  // neck_share_kg): `mass` is the reference segment less it, and an axis CoG target is the
+  // reference point with it taken out at the mesh neck's lowest neck_share kg.
+  double neck_share = 0;
   std::string source;
   int line = 0;
 };

@@ -78,6 +78,10 @@ void SegmentCuts::classify(const std::string& part_segment, const Eigen::Vector3
 // already weigh more than its target.
 void assign_rigid_body_masses(FeModel& m, const GeometrySources& g, const ModelLandmarks& lm);
 
+// Centroid of the lowest `share` kg of the mesh neck along its axis (T1 top to C0): the
+// lower neck that Zatsiorsky's upper trunk holds (segment_targets.csv neck_share_kg).
+Eigen::Vector3d lower_neck_centroid(const FeModel& m, const SegmentCuts& cuts, const ModelLandmarks& lm, double share);
+
 struct BudgetRow {
   std::string region, kind;
   std::size_t count = 0;

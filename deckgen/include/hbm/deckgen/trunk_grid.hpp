@@ -73,7 +73,8 @@ class TrunkGrid {
 };
 
 // Superellipse point at arc-length fraction s in [0, 1] of the left half (s = 0 front
-// midline, s = 1 back midline), centre x_c, half-depth hd (x), half-width hw (y).
-Eigen::Vector2d superellipse_half_point(double x_c, double hd, double hw, double n, double s);
+// midline, s = 1 back midline), centre x_c, half-depth hd (x), half-width hw (y); the
+// widest point (half-width hw) lies widest_forward ahead of the centre (0: symmetric).
+Eigen::Vector2d superellipse_half_point(double x_c, double hd, double hw, double n, double s, double widest_forward = 0);
 
 }  // namespace hbm::deckgen
