@@ -61,6 +61,21 @@ void add_engine(std::vector<KeywordSpec>& out) {
     out.push_back(std::move(k));
   }
   {
+    KeywordSpec k = card("/DT/BRICK/CST", IdKind::Optional,
+                         "/DT/BRICK/CST/Iflag: a brick whose time step Tsca dt_crit falls below Tmin (Iflag 1: or whose "
+                         "volume ratio V/V0 falls to VDEF_min) switches to the small strain formulation (geometry kept "
+                         "from the switch on).");
+    k.lines.push_back(line("line 1", {
+        real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
+        real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
+    }));
+    k.lines.push_back(line("line 2", {
+        real_field("ASP_min", 0, Dimension::None, kNonNegative, 0, "minimum aspect ratio (tetra collapse; 0 = none)"),
+        real_field("VDEF_min", 20, Dimension::None, {0, 1, false, true}, 0, "minimum volume ratio V/V0 (0 = none)"),
+    }, true));
+    out.push_back(std::move(k));
+  }
+  {
     KeywordSpec k = card("/STOP", IdKind::None, "Stop criteria on energy error and added mass.");
     k.lines.push_back(line("line 1", {
         real_field("Emax", 0, Dimension::None, kNonNegative, 0, "maximum energy error ratio (0 = none)"),

@@ -84,6 +84,7 @@ Index BrickHa8Group::initialize(const NodalState& nodes) {
   e_int.assign(n, 0.0);
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
+  if (small_strain.enabled) frozen_geometry.allocate(n);
   allocate_slots(false);
   Index bad = kNoIndex;
   for (std::size_t e = 0; e < n; ++e) {
@@ -167,6 +168,13 @@ void BrickHa8Group::compute_chunk(std::size_t chunk, const StepContext& step, co
       x[i] = nodes.x.x[k]; y[i] = nodes.x.y[k]; z[i] = nodes.x.z[k];
       vx[i] = nodes.v.x[k]; vy[i] = nodes.v.y[k]; vz[i] = nodes.v.z[k];
     }
+    // /DT/BRICK/CST: a switched element keeps the geometry it had at the switch.
+    const bool frozen = frozen_geometry.active() && frozen_geometry.frozen[e] != 0;
+    if (frozen)
+      for (int i = 0; i < 8; ++i) {
+        const double* xf = &frozen_geometry.x[e * 24 + 3 * static_cast<std::size_t>(i)];
+        x[i] = xf[0]; y[i] = xf[1]; z[i] = xf[2];
+      }
     // Exact volume gradient b_I at x^n (pressure force, time step) and point gradients.
     double bx[8], by[8], bz[8], V = 0.0, amax = 0.0;
     brick::volume_gradient(x, y, z, bx, by, bz, V, amax);
@@ -184,7 +192,7 @@ void BrickHa8Group::compute_chunk(std::size_t chunk, const StepContext& step, co
     // Velocity gradients on the mid-step configuration x^{n-1/2} = x^n - dt/2 v^{n-1/2}
     // (as the one-point kernel: second-order strain increment, trapezoidal work).
     double gmx[8][8], gmy[8][8], gmz[8][8], dvm[8];
-    bool mid = dt > 0.0;
+    bool mid = dt > 0.0 && !frozen;
     if (mid) {
       double xm[8], ym[8], zm[8];
       for (int i = 0; i < 8; ++i) {
@@ -301,6 +309,13 @@ void BrickHa8Group::compute_chunk(std::size_t chunk, const StepContext& step, co
     if (dte < dt_min) {
       dt_min = dte;
       dt_elem = static_cast<Index>(e);
+    }
+    if (frozen_geometry.active() && !frozen && small_strain.triggers(dte, V / volume0[e])) {
+      double* xf = &frozen_geometry.x[e * 24];
+      for (int i = 0; i < 8; ++i) {
+        xf[3 * i] = x[i]; xf[3 * i + 1] = y[i]; xf[3 * i + 2] = z[i];
+      }
+      frozen_geometry.frozen[e] = 1;
     }
     const double k_slot = 2.0 * (mass[e] / 8.0) / (dte * dte);
     for (int i = 0; i < 8; ++i) {

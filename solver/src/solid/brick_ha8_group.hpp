@@ -19,6 +19,7 @@
 #pragma once
 
 #include "hbm/solver/element_group.hpp"
+#include "solid/small_strain_switch.hpp"
 #include "solid/solid_material.hpp"
 
 #include <vector>
@@ -42,6 +43,9 @@ class BrickHa8Group final : public ElementGroup {
   std::vector<double> eps_p;    // 8 per element: plastic strain (LAW2/36)
   std::vector<double> e_int;    // internal energy of the element [energy]
   std::vector<double> q_bulk;   // bulk viscosity pressure of the last cycle [stress]
+  // /DT/BRICK/CST (set before initialize, which sizes the frozen geometry).
+  SmallStrainSwitch small_strain;
+  FrozenBrickGeometry frozen_geometry;
 
   // Size the arrays (after n_elements / connectivity) and compute V0 and mass. Returns
   // the first element with a non-positive Jacobian at a Gauss point, or kNoIndex.

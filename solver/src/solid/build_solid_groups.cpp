@@ -185,9 +185,28 @@ bool read_ha8_property(BuildContext& ctx, const Part& part, BrickHa8Group& g) {
   return true;
 }
 
+// /DT/BRICK/CST/Iflag of the engine deck (the last one counts, as for /DT/NODA/CST).
+// ASP_min (tetra collapse) is not supported: an error, not a silent ignore.
+SmallStrainSwitch read_small_strain_switch(BuildContext& ctx) {
+  SmallStrainSwitch sw;
+  for (const hbm::deck::Card* c : ctx.engine().cards_of("/DT/BRICK/CST")) {
+    sw.enabled = true;
+    sw.tsca = c->real(0, "Tsca");
+    sw.tmin = c->real(0, "Tmin");
+    if (!(sw.tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", "must be > 0 for /DT/BRICK/CST");
+    if (c->lines.size() > 1) {
+      if (c->real(1, "ASP_min") > 0)
+        ctx.error(*c, c->lines.at(1), "ASP_min", "not supported (tetra collapse switch); use 0");
+      sw.vdef_min = c->real(1, "VDEF_min");
+    }
+  }
+  return sw;
+}
+
 }  // namespace
 
 void build_solid_groups(BuildContext& ctx) {
+  const SmallStrainSwitch small_strain = read_small_strain_switch(ctx);
   for (std::string_view kw : {"/BRICK", "/TETRA4"}) {
     ctx.claim(kw);
     const int npe = kw == "/BRICK" ? 8 : 4;
@@ -210,12 +229,14 @@ void build_solid_groups(BuildContext& ctx) {
         auto h = std::make_unique<BrickHa8Group>();
         if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, h->material)) continue;
         if (!read_ha8_property(ctx, p, *h)) continue;
+        h->small_strain = small_strain;
         fill_group(ctx, kw, part, cards, std::move(h));
         continue;
       }
       auto g = std::make_unique<SolidGroup>();
       if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
       if (!read_solid_property(ctx, p, *g)) continue;
+      if (npe == 8) g->small_strain = small_strain;
       fill_group(ctx, kw, part, cards, std::move(g));
     }
   }

@@ -82,6 +82,7 @@ struct BrickLanes {
   alignas(64) double V[W], Vm[W], amax2[W], amid2[W], ok[W], mass[W], rho[W], c[W], v23[W];
   alignas(64) double q[W], qv[W], q_old[W], e_int[W], de[W], p_int[W], p_hg[W], dte[W], lc[W], tmp[W];
   alignas(64) double g[9][W], half[3][W], n2[W];     // Physical: centre Jacobian, frame
+  alignas(64) double mv[W];  // 1: mid-step shift x - dt/2 v; 0: small strain (frozen geometry)
 };
 
 
@@ -176,6 +177,7 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     for (auto& a : hg) a.assign(n, 0.0);
   if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
     for (auto& a : hg_visc) a.assign(n, 0.0);
+  if (nodes_per_element == 8 && small_strain.enabled) frozen_geometry.allocate(n);
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
   allocate_slots(false);
@@ -431,6 +433,16 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
       b.vx[i][l] = nodes.v.x[k]; b.vy[i][l] = nodes.v.y[k]; b.vz[i][l] = nodes.v.z[k];
     }
   }
+  std::fill_n(b.mv, n, 1.0);
+  if (frozen_geometry.active())
+    for (std::size_t l = 0; l < n; ++l) {
+      if (!frozen_geometry.frozen[e0 + l]) continue;
+      const double* xf = &frozen_geometry.x[(e0 + l) * 24];
+      for (int i = 0; i < 8; ++i) {
+        b.x[i][l] = xf[3 * i]; b.y[i][l] = xf[3 * i + 1]; b.z[i][l] = xf[3 * i + 2];
+      }
+      b.mv[l] = 0.0;
+    }
   for (int k = 0; k < 6; ++k) std::copy_n(sig[k].data() + e0, n, b.sig[k]);
   if (visco)
     for (int k = 0; k < 6; ++k) std::copy_n(hist[k].data() + e0, n, b.hist[k]);
@@ -460,9 +472,9 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
     const double hdt = 0.5 * dt;
     for (int i = 0; i < 8; ++i)
       for (std::size_t l = 0; l < n; ++l) {
-        b.fx[i][l] = b.x[i][l] - hdt * b.vx[i][l];
-        b.fy[i][l] = b.y[i][l] - hdt * b.vy[i][l];
-        b.fz[i][l] = b.z[i][l] - hdt * b.vz[i][l];
+        b.fx[i][l] = b.x[i][l] - hdt * b.mv[l] * b.vx[i][l];
+        b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
+        b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
       }
     brick::volume_gradient_lanes(n, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.amid2);
     for (int i = 0; i < 8; ++i)
@@ -724,6 +736,19 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
   keep(q_bulk, b.q);
   for (std::size_t l = 0; l < n; ++l) b.e_int[l] = (b.e_int[l] + b.de[l]) + b.p_int[l];
   keep(e_int, b.e_int);
+  // /DT/BRICK/CST: a lane whose step fell to Tmin (or volume ratio to VDEF_min) keeps its
+  // present geometry from the next cycle on (small_strain_switch.hpp).
+  if (frozen_geometry.active())
+    for (std::size_t l = 0; l < n; ++l) {
+      const std::size_t e = e0 + l;
+      if (b.ok[l] == 0.0 || frozen_geometry.frozen[e] || !small_strain.triggers(b.dte[l], b.V[l] / volume0[e]))
+        continue;
+      double* xf = &frozen_geometry.x[e * 24];
+      for (int i = 0; i < 8; ++i) {
+        xf[3 * i] = b.x[i][l]; xf[3 * i + 1] = b.y[i][l]; xf[3 * i + 2] = b.z[i][l];
+      }
+      frozen_geometry.frozen[e] = 1;
+    }
   // Reductions in element order (the same sums whatever the thread count).
   for (std::size_t l = 0; l < n; ++l) {
     if (b.ok[l] == 0.0) continue;

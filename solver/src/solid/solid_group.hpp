@@ -18,6 +18,7 @@
 #pragma once
 
 #include "hbm/solver/element_group.hpp"
+#include "solid/small_strain_switch.hpp"
 #include "solid/solid_material.hpp"
 
 #include <array>
@@ -54,6 +55,9 @@ class SolidGroup final : public ElementGroup {
   std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]
   std::array<std::vector<double>, 12> hg_visc;  // Physical: viscous part of Q (global) [force]
   std::vector<double> q_bulk;              // bulk viscosity pressure of the last cycle [stress]
+  // /DT/BRICK/CST (8-node bricks; set before initialize, which sizes the frozen geometry).
+  SmallStrainSwitch small_strain;
+  FrozenBrickGeometry frozen_geometry;
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
   // compute V0 and mass from the current nodal positions. Returns the local index of
