@@ -70,6 +70,30 @@ def global_history(run_dir):
     return data
 
 
+def part_hourglass_end(run_dir, top=3):
+    """The parts with the largest hourglass energy at the last row of the part time history
+    (/TH/PART columns 'part N name HE [J]'), with their internal energy: [(name, HE, IE)]."""
+    files = sorted(glob.glob(os.path.join(run_dir, "*_TH_PART_*.csv")))
+    if not files:
+        return []
+    with open(files[0]) as f:
+        rows = list(csv.reader(f))
+    if len(rows) < 2:
+        return []
+    head, last = rows[0], rows[-1]
+    parts = {}
+    for i, h in enumerate(head):
+        for kind in ("HE", "IE"):
+            if h.startswith("part ") and h.endswith(f" {kind} [J]"):
+                name = h[len("part "):-len(f" {kind} [J]")].split(" ", 1)[-1]
+                try:
+                    parts.setdefault(name, {})[kind] = float(last[i])
+                except (ValueError, IndexError):
+                    pass
+    ranked = sorted(parts.items(), key=lambda kv: -kv[1].get("HE", 0.0))[:top]
+    return [(n, v.get("HE", 0.0), v.get("IE", 0.0)) for n, v in ranked if v.get("HE", 0.0) > 0]
+
+
 def listing_facts(run_dir, case):
     path = os.path.join(run_dir, f"{case}_0001.out")
     facts = {"terminated": "no listing", "cycles": None, "solver_wall_s": None, "reason": ""}
@@ -139,6 +163,7 @@ def main():
             ratios = [100 * h / i for h, i in zip(he, ie) if ie_max > 0 and i > 0.1 * ie_max]
             r["hg_end"] = 100 * he[-1] / ie[-1] if ie[-1] > 0 else None
             r["hg_max"] = max(ratios) if ratios else None
+        r["hg_parts"] = part_hourglass_end(run_dir) if os.path.isdir(run_dir) else []
         runs.append(r)
         lc = os.path.join(a.work, "runs", f"{c}.loadcase.txt")
         if os.path.exists(lc):
@@ -243,6 +268,15 @@ def main():
     L.append("Energy error = (E_kin + E_int + E_hg + E_contact) / (E_0 + W_ext) - 1 as the solver writes it; "
              "added mass = (M - M0) / M0 from nodal mass scaling at the fixed 1.5 us step; hourglass / internal "
              "max is taken over the times when the internal energy exceeds 10 % of its peak.")
+    L.append("")
+    L.append("Where the hourglass energy sits at the end of each run (the three parts with the most; "
+             "part internal energy beside it):")
+    L.append("")
+    L.append("| case | part: hourglass / internal energy [J] |")
+    L.append("|---|---|")
+    for r in runs:
+        hp = r.get("hg_parts") or []
+        L.append(f"| {r['case']} | " + (", ".join(f"{n}: {fmt(h, 1)} / {fmt(i, 1)}" for n, h, i in hp) or "-") + " |")
     L.append("")
     L.append("## Channels")
     L.append("")
