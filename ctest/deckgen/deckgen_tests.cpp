@@ -94,6 +94,31 @@ TEST(GeometrySources, BadRibRowStopsWithFileLine) {
   }
 }
 
+// The optional columns widest_forward_mm (torso_sections.csv) and neck_share_kg
+// (segment_targets.csv): a value out of range names the file, line and field.
+TEST(GeometrySources, BadWidestForwardAndNeckShareStopWithFileLine) {
+  fs::path d = copy_geometry("widest");
+  replace_in_file(d / "torso_sections.csv", ",2.3,62.6,hip joints", ",2.3,90.0,hip joints");
+  try {
+    load_geometry(d);
+    FAIL() << "no error";
+  } catch (const SourceError& e) {
+    std::string w = e.what();
+    EXPECT_NE(w.find("torso_sections.csv:"), std::string::npos) << w;
+    EXPECT_NE(w.find("widest_forward_mm"), std::string::npos) << w;
+  }
+  fs::path n = copy_geometry("neckshare");
+  replace_in_file(n / "segment_targets.csv", ",1,0,0.7368,de Leva 1996 upper trunk", ",1,0,-0.7368,de Leva 1996 upper trunk");
+  try {
+    load_geometry(n);
+    FAIL() << "no error";
+  } catch (const SourceError& e) {
+    std::string w = e.what();
+    EXPECT_NE(w.find("segment_targets.csv:"), std::string::npos) << w;
+    EXPECT_NE(w.find("neck_share_kg"), std::string::npos) << w;
+  }
+}
+
 TEST(GeometrySources, UrdfMissingLinkAndBrokenXml) {
   fs::path d = copy_geometry("urdf");
   replace_in_file(d / "skeleton.urdf", "<link name=\"T7\"/>", "<link name=\"T7x\"/>");
