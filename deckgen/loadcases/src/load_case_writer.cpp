@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writes a pendulum impact deck pair on the body model (see load_case.hpp).
 //
-// Impactor: shell face and rim (steel, 1 mm; all its nodes secondaries of one /RBODY, so
-// its elements are inactive) plus the rest of the mass as added mass, so that shells +
+// Impactor: shell face, rounded edge and rim (impactor_disc.hpp; steel, 1 mm; all its nodes
+// secondaries of one /RBODY, so its elements are inactive) plus the rest of the mass as
+// added mass, so that shells +
 // added mass = spec.mass_kg exactly; added inertia of a solid steel cylinder of that mass
 // and face (J_axis = m R^2/2, J_transverse = m (3 R^2 + L^2)/12). Rotations of the main
 // node are fixed (/BCS): a guided impactor that translates only.
@@ -145,10 +146,27 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   g.travel = -u;
   const double R = 0.5 * spec.face_diameter_mm;
 
-  // Landmarks and reference nodes.
+  ImpactorShape shape;
+  shape.radius = R;
+  shape.edge_radius = spec.edge_radius_mm;
+  if (!(shape.edge_radius >= 0) || shape.edge_radius >= R)
+    throw std::runtime_error(spec.name + ": edge radius " + fmt(spec.edge_radius_mm, 2) + " mm must lie in [0, " + fmt(R, 2) +
+                             ") mm (half the face diameter)");
+
+  // Landmarks and reference nodes. contact_nodes: the struck skin (aim); all_contact_*: skin
+  // and the limbs in the path, the impactor contact's secondaries.
   const auto contact_parts = require_parts(model, spec.contact_part_prefixes, "contact with the impactor face");
   const auto contact_nodes = model.nodes_of(contact_parts);
-  g.contact_nodes = contact_nodes.size();
+  std::vector<std::int64_t> all_contact_parts = contact_parts;
+  if (!spec.limb_part_prefixes.empty()) {
+    const auto limbs = require_parts(model, spec.limb_part_prefixes, "limbs in the impactor's path");
+    all_contact_parts.insert(all_contact_parts.end(), limbs.begin(), limbs.end());
+    std::sort(all_contact_parts.begin(), all_contact_parts.end());
+    all_contact_parts.erase(std::unique(all_contact_parts.begin(), all_contact_parts.end()), all_contact_parts.end());
+  }
+  const auto all_contact_nodes = model.nodes_of(all_contact_parts);
+  g.contact_nodes = all_contact_nodes.size();
+  g.limb_contact_nodes = all_contact_nodes.size() - contact_nodes.size();
   const auto sternum_nodes = model.nodes_of(require_parts(model, {"sternum"}, "sternum reference"));
   double zs_min = std::numeric_limits<double>::infinity(), zs_max = -zs_min;
   for (auto n : sternum_nodes) zs_min = std::min(zs_min, model.nodes.at(n).z()), zs_max = std::max(zs_max, model.nodes.at(n).z());
@@ -187,30 +205,42 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
     }
   }
 
-  // Face position: clearance ahead of the foremost contact node in the footprint.
-  double s_max = -std::numeric_limits<double>::infinity();
-  for (auto n : contact_nodes) {
+  // Face position: the impactor surface (flat face, then the edge fillet set back by
+  // ImpactorShape::setback) clear of every contact node in the footprint by the initial
+  // clearance, measured along the axis. s_max: face-plane position that touches the
+  // foremost node (struck skin or limb); s_skin: the same for the struck skin alone.
+  const std::int64_t no_part = std::numeric_limits<std::int64_t>::min();
+  std::map<std::int64_t, std::int64_t> part_of;  // contact node -> part
+  for (auto pid : all_contact_parts)
+    for (auto n : model.nodes_of({pid})) part_of.emplace(n, pid);
+  double s_max = -std::numeric_limits<double>::infinity(), s_skin = s_max;
+  std::int64_t nearest = no_part;
+  for (auto n : all_contact_nodes) {
     const Eigen::Vector3d& p = model.nodes.at(n);
-    if (axis_distance(p, P, u) < R) {
+    const double rho = axis_distance(p, P, u);
+    if (rho < R) {
       ++g.footprint_contact_nodes;
-      s_max = std::max(s_max, (p - P).dot(u));
+      const double s = (p - P).dot(u) - shape.setback(rho);
+      if (s > s_max) s_max = s, nearest = part_of.at(n);
+      if (std::binary_search(contact_nodes.begin(), contact_nodes.end(), n)) s_skin = std::max(s_skin, s);
     }
   }
-  if (g.footprint_contact_nodes == 0)
+  if (g.footprint_contact_nodes == 0 || !std::isfinite(s_skin))
     throw std::runtime_error(spec.name + ": no node of the contact parts lies in the impactor's footprint (axis through " +
                              fmt(P.x()) + " " + fmt(P.y()) + " " + fmt(P.z()) + ")");
+  g.nearest_part = model.part_titles.count(nearest) ? model.part_titles.at(nearest) : std::to_string(nearest);
   const double s_face = s_max + spec.initial_clearance_mm;
   g.face_centre = P + s_face * u;
   g.first_contact_ms = (spec.initial_clearance_mm - spec.contact_gap_mm) / spec.speed_m_s;
-  // Other model nodes ahead of the struck surface in the path: the impactor does not touch them.
+  // Other model nodes ahead of the struck skin in the path: the impactor does not touch them.
   std::map<std::string, int> in_path;
-  const std::vector<std::int64_t> contact_set = contact_nodes;
   for (const auto& [pid, list] : model.part_nodes) {
     int k = 0;
     for (auto n : list) {
       const Eigen::Vector3d& p = model.nodes.at(n);
-      if (axis_distance(p, P, u) < R && (p - P).dot(u) > s_max &&
-          !std::binary_search(contact_set.begin(), contact_set.end(), n))
+      const double rho = axis_distance(p, P, u);
+      if (rho < R && (p - P).dot(u) - shape.setback(rho) > s_skin &&
+          !std::binary_search(all_contact_nodes.begin(), all_contact_nodes.end(), n))
         ++k;
     }
     if (k) in_path[model.part_titles.count(pid) ? model.part_titles.at(pid) : std::to_string(pid)] += k;
@@ -220,7 +250,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
                          " lie in the impactor's path ahead of the struck skin; the impactor does not contact them");
 
   // Impactor mesh and ids.
-  const ImpactorDisc disc = make_impactor_disc(g.face_centre, u, R, 20.0);
+  const ImpactorDisc disc = make_impactor_disc(g.face_centre, u, shape);
   const std::int64_t node0 = next_base(model.max_node_id, 100000);
   const std::int64_t elem0 = next_base(model.max_element_id, 100000);
   const std::int64_t obj = next_base(model.max_object_id, 1000);
@@ -281,7 +311,8 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   std::vector<std::int64_t> all_impactor = secondaries;
   all_impactor.insert(all_impactor.begin(), g.impactor_main_node);
   add_node_group(d, obj + 3, "impactor all nodes", all_impactor);
-  add_part_group(d, "/GRNOD/PART", obj + 4, "skin nodes in contact with the impactor", contact_parts);
+  add_part_group(d, "/GRNOD/PART", obj + 4, "nodes in contact with the impactor (struck skin, limbs in the path)",
+                 all_contact_parts);
   CardBuilder(d, "/RBODY", obj + 1, "impactor rigid body")
       .set_int(0, "node_id", g.impactor_main_node).set(0, "Mass", added_mass).set_int(0, "grnod_id", obj + 1)
       .set(1, "Jxx", tidy(J(0, 0))).set(1, "Jyy", tidy(J(1, 1))).set(1, "Jzz", tidy(J(2, 2)))
@@ -292,7 +323,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   const Eigen::Vector3d v0 = spec.speed_m_s * g.travel;
   CardBuilder(d, "/INIVEL/TRA", obj + 1, "impactor initial velocity")
       .set(0, "Vx", tidy(v0.x())).set(0, "Vy", tidy(v0.y())).set(0, "Vz", tidy(v0.z())).set_int(0, "grnod_id", obj + 3).commit();
-  add_part_group(d, "/SURF/PART", obj + 1, "impactor face and rim", {part});
+  add_part_group(d, "/SURF/PART", obj + 1, "impactor face, rounded edge and rim", {part});
   CardBuilder(d, "/INTER/TYPE7", obj + 1, "impactor contact")
       .set_int(0, "grnod_id", obj + 4).set_int(0, "surf_id", obj + 1)
       .set(3, "Stfac", 1.0).set(3, "Fric", spec.friction).set(3, "Gapmin", spec.contact_gap_mm)
@@ -329,17 +360,20 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
        << geometry_dir.generic_string() << "; regenerate rather than edit, or edit by hand and rerun.\n"
        << "# Impactor: rigid body " << obj + 1 << " (part " << part << ", main node " << g.impactor_main_node << "), "
        << fmt(spec.mass_kg, 2) << " kg = " << fmt(shell_mass, 4) << " kg shells + " << fmt(added_mass, 4)
-       << " kg added, face diameter " << fmt(spec.face_diameter_mm, 0) << " mm, rotations fixed,\n"
+       << " kg added, face diameter " << fmt(spec.face_diameter_mm, 0) << " mm (flat " << fmt(2 * (R - shape.edge_radius))
+       << " mm, edge radius " << fmt(shape.edge_radius) << " mm), rotations fixed,\n"
        << "#   initial velocity " << fmt(spec.speed_m_s, 2) << " m/s (= mm/ms) along (" << fmt(g.travel.x(), 4) << ", "
        << fmt(g.travel.y(), 4) << ", " << fmt(g.travel.z(), 4) << ") in /INIVEL/TRA/" << obj + 1
        << "; face centre (" << fmt(g.face_centre.x()) << ", " << fmt(g.face_centre.y()) << ", " << fmt(g.face_centre.z())
-       << ") mm,\n#   " << fmt(spec.initial_clearance_mm) << " mm clear of the skin, contact gap " << fmt(spec.contact_gap_mm)
+       << ") mm,\n#   " << fmt(spec.initial_clearance_mm) << " mm clear of " << g.nearest_part << ", contact gap " << fmt(spec.contact_gap_mm)
        << " mm: first contact at about " << fmt(g.first_contact_ms, 3) << " ms.\n"
        << "# Contact /INTER/TYPE7/" << obj + 1 << ": nodes of the parts " ;
-  for (std::size_t i = 0; i < contact_parts.size(); ++i)
-    head << (i ? ", " : "") << model.part_titles.at(contact_parts[i]);
+  for (std::size_t i = 0; i < all_contact_parts.size(); ++i)
+    head << (i ? ", " : "") << model.part_titles.at(all_contact_parts[i]);
   head << " on the impactor face (friction " << fmt(spec.friction, 2)
        << ", critical damping VISs " << fmt(spec.contact_damping, 2) << ").\n"
+       << (spec.posture.empty() ? std::string() : "# Posture: " + spec.posture + ", model " + spec.posed_model + " = " +
+                                                     spec.posed_model_command + ".\n")
        << "# Subject free (no seat, no back support, no gravity: the event lasts " << fmt(spec.tstop_ms, 0) << " ms).\n"
        << "# Time histories: /TH/NODE/" << obj + 1 << " (impactor main node, " << spec.spine_level << " node "
        << g.spine_node << ", sternum node " << g.sternum_node << "), /TH/RBODY/" << obj + 2 << ", /TH/INTER/" << obj + 3
@@ -401,7 +435,8 @@ void print_generated(std::ostream& os, const LoadCaseSpec& spec, const Generated
      << fmt(g.face_centre.x()) << ", " << fmt(g.face_centre.y()) << ", " << fmt(g.face_centre.z())
      << ") mm, travel (" << fmt(g.travel.x(), 3) << ", " << fmt(g.travel.y(), 3) << ", " << fmt(g.travel.z(), 3)
      << "), first contact ~" << fmt(g.first_contact_ms, 3) << " ms\n"
-     << "  contact nodes " << g.contact_nodes << " (" << g.footprint_contact_nodes << " in the footprint); "
+     << "  contact nodes " << g.contact_nodes << " (" << g.limb_contact_nodes << " of limbs; " << g.footprint_contact_nodes
+     << " in the footprint, nearest of " << g.nearest_part << "); "
      << spec.spine_level << " node " << g.spine_node << " (" << fmt(g.spine_node_distance_mm) << " mm from the body centre), sternum node "
      << g.sternum_node << ", impactor main node " << g.impactor_main_node << "\n";
   for (const auto& w : g.warnings) os << "  warning: " << w << "\n";

@@ -2,10 +2,14 @@
 // hbm-loadcase: writes the pendulum (hub) impact validation decks on the generated body
 // model: decks/<case>/<case>_0000.rad + _0001.rad, which #include decks/hbm50/hbm50.inc.
 #include "hbm/deckgen/loadcases/load_case.hpp"
+#include "hbm/deckgen/loadcases/posed_model.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
+#include <map>
+#include <stdexcept>
 
 int main(int argc, char** argv) {
   using namespace hbm::deckgen::loadcases;
@@ -61,9 +65,27 @@ int main(int argc, char** argv) {
   }
   try {
     const ModelView m = read_model(model);
+    std::map<std::string, ModelView> posed;  // posed variants read once (posed_model.hpp)
     for (const auto& s : specs) {
       const std::filesystem::path dir = out.empty() ? std::filesystem::path(decks_dir) / s.name : std::filesystem::path(out);
-      const GeneratedCase g = generate_load_case(s, m, model, geometry, dir);
+      const ModelView* use = &m;
+      std::filesystem::path use_path = model;
+      if (!s.posed_model.empty()) {
+        use_path = posed_model_path(model, s.posed_model);
+        if (!std::filesystem::exists(use_path))
+          throw std::runtime_error(s.name + ": no posed model " + use_path.string() + "; write it from the repository root: " +
+                                   s.posed_model_command);
+        auto it = posed.find(use_path.string());
+        if (it == posed.end()) {
+          it = posed.emplace(use_path.string(), read_model(use_path)).first;
+          check_posed_model(m, it->second, s.posed_part_prefixes, s.posed_model_command);
+        }
+        use = &it->second;
+        // relative to the current folder like --model, so the deck's #include is relative too
+        if (!std::filesystem::path(model).is_absolute())
+          use_path = std::filesystem::relative(use_path, std::filesystem::current_path());
+      }
+      const GeneratedCase g = generate_load_case(s, *use, use_path, geometry, dir);
       print_generated(std::cout, s, g);
     }
   } catch (const std::exception& e) {
