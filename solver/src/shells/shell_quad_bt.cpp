@@ -25,13 +25,46 @@
 // beta_y = -thx), which vanishes for every Kirchhoff field of constant curvature, so
 // the twist and bending patch tests are passed with Hf > 0 (same idea as the physical
 // stabilisation of Belytschko & Leviathan 1994).
+//
+// Lanes: the elements are computed in batches of QuadLanes::W (element k of the batch
+// is lane k); the nodal values and the element state are gathered into [node][lane]
+// arrays and every stage is a loop over the lanes that GCC vectorises (-march=native),
+// as the brick kernel (solid_group.cpp). Lanes of deleted or folded elements are
+// computed like the others on finite stand-in values and masked on output. Each lane
+// does the arithmetic of the one-element formulas above in the same order, so the
+// results do not depend on the batch nor on the thread count. Square roots sit in loops
+// of their own (without -fno-math-errno a sqrt call keeps a loop scalar).
 #include "shells/shell_group_data.hpp"
-#include "shells/shell_through_thickness.hpp"
+#include "shells/shell_thickness_lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace hbm::solver::shells {
+
+namespace {
+
+// One batch of quads as lanes (thread_local, about 45 KB).
+struct QuadLanes {
+  static constexpr std::size_t W = 32;
+  alignas(64) std::int32_t node[4][W];                 // node indices
+  alignas(64) double X[4][W], Y[4][W], Z[4][W];        // mid-step positions
+  alignas(64) double VX[4][W], VY[4][W], VZ[4][W];     // velocities (global)
+  alignas(64) double WX[4][W], WY[4][W], WZ[4][W];     // angular velocities (global)
+  alignas(64) double e1[3][W], e2[3][W], e3[3][W];     // local frame
+  alignas(64) double x[4][W], y[4][W], zw[4][W];       // local coordinates, warping heights
+  alignas(64) double vx[4][W], vy[4][W], vz[4][W], tx[4][W], ty[4][W];  // local rates
+  alignas(64) double B1[4][W], B2[4][W], gam[4][W];
+  alignas(64) double gxz[W], gyz[W];
+  alignas(64) double A[W], ok[W], alive[W], sq[W], lmax2[W];
+  ThicknessLanes<W> th;                                // strain increments in, resultants out
+  alignas(64) double q[7][W];                          // extra: Qx Qy, 5 hourglass forces
+  alignas(64) double dEhg[W], dte[W];
+  alignas(64) double f[6][W * 4];                      // force, moment ON the nodes, global,
+                                                       // slot order (lane * 4 + node)
+};
+
+}  // namespace
 
 ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
                                  const ShellSlotOut& out, double dt,
@@ -40,176 +73,256 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
   const int np = sec.n_points;
-  const int nh = mat.n_history();
   const double E = mat.young(), G = mat.shear_modulus();
   const double cwave = mat.plate_wave_speed();
-  static constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
+  const double hdt = 0.5 * dt;
+  static thread_local QuadLanes lanes;
+  QuadLanes& b = lanes;
+  constexpr std::size_t W = QuadLanes::W;
 
-  for (const std::int32_t el : elements) {
-    const auto e = static_cast<std::size_t>(el);
-    const std::size_t s0 = e * 4;
-    auto zero_slots = [&] {
-      for (std::size_t s = s0; s < s0 + 4; ++s)
-        out.fx[s] = out.fy[s] = out.fz[s] = out.mx[s] = out.my[s] = out.mz[s] = 0.0;
+  for (std::size_t k0 = 0; k0 < elements.size(); k0 += W) {
+    const std::size_t n = std::min(W, elements.size() - k0);
+    const std::int32_t* idx = elements.data() + k0;
+    // Gather: mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2} (the velocity gradient
+    // of a rigid rotation is then skew, so rotations strain nothing), v, omega, state.
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      for (int i = 0; i < 4; ++i) b.node[i][l] = g.conn[e * 4 + static_cast<std::size_t>(i)];
+      b.th.t[l] = g.thick[e];
+      b.th.nfail[l] = g.n_failed[e];
+      const double* ex7 = &g.extra[e * 7];
+      for (int c = 0; c < 7; ++c) b.q[c][l] = ex7[c];
+    }
+    // One nodal field pair at a time (few live pointers: no register spills).
+    const auto gather = [&](const double* __restrict a, double (*lane)[W]) {
+      for (int i = 0; i < 4; ++i)
+        for (std::size_t l = 0; l < n; ++l) lane[i][l] = a[b.node[i][l]];
     };
-    if (g.deleted[e]) {
-      zero_slots();
-      g.dt_elem[e] = 1e300;
-      continue;
-    }
-    const std::int32_t* cn = &g.conn[e * 4];
-    double X[4][3], V[4][3], W[4][3];
-    for (int i = 0; i < 4; ++i) {
-      const auto n = cn[i];
-      X[i][0] = nv.x[n]; X[i][1] = nv.y[n]; X[i][2] = nv.z[n];
-      V[i][0] = nv.vx[n]; V[i][1] = nv.vy[n]; V[i][2] = nv.vz[n];
-      W[i][0] = nv.wx[n]; W[i][1] = nv.wy[n]; W[i][2] = nv.wz[n];
-      // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: the velocity gradient of a
-      // rigid rotation is then skew (Cayley transform), so rotations strain nothing.
-      for (int k = 0; k < 3; ++k) X[i][k] -= 0.5 * dt * V[i][k];
-    }
-    // Local frame.
-    double r31[3], r42[3], r21[3], e3[3], ex[3], ey[3];
-    for (int k = 0; k < 3; ++k) {
-      r31[k] = X[2][k] - X[0][k];
-      r42[k] = X[3][k] - X[1][k];
-      r21[k] = X[1][k] - X[0][k];
-    }
-    e3[0] = r31[1] * r42[2] - r31[2] * r42[1];
-    e3[1] = r31[2] * r42[0] - r31[0] * r42[2];
-    e3[2] = r31[0] * r42[1] - r31[1] * r42[0];
-    const double n3 = 1.0 / std::sqrt(e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2]);
-    for (double& c : e3) c *= n3;
-    const double d21 = r21[0] * e3[0] + r21[1] * e3[1] + r21[2] * e3[2];
-    for (int k = 0; k < 3; ++k) ex[k] = r21[k] - d21 * e3[k];
-    const double n1 = 1.0 / std::sqrt(ex[0] * ex[0] + ex[1] * ex[1] + ex[2] * ex[2]);
-    for (double& c : ex) c *= n1;
-    ey[0] = e3[1] * ex[2] - e3[2] * ex[1];
-    ey[1] = e3[2] * ex[0] - e3[0] * ex[2];
-    ey[2] = e3[0] * ex[1] - e3[1] * ex[0];
-    double xc[3] = {0, 0, 0};
+    gather(nv.vx, b.VX); gather(nv.vy, b.VY); gather(nv.vz, b.VZ);
+    gather(nv.wx, b.WX); gather(nv.wy, b.WY); gather(nv.wz, b.WZ);
+    gather(nv.x, b.X); gather(nv.y, b.Y); gather(nv.z, b.Z);
     for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) xc[k] += 0.25 * X[i][k];
-    // Local coordinates, velocities, rotations (projected by the rigid links).
-    double x[4], y[4], zw[4], vx[4], vy[4], vz[4], tx[4], ty[4];
-    for (int i = 0; i < 4; ++i) {
-      const double d[3] = {X[i][0] - xc[0], X[i][1] - xc[1], X[i][2] - xc[2]};
-      x[i] = d[0] * ex[0] + d[1] * ex[1] + d[2] * ex[2];
-      y[i] = d[0] * ey[0] + d[1] * ey[1] + d[2] * ey[2];
-      zw[i] = d[0] * e3[0] + d[1] * e3[1] + d[2] * e3[2];
-      tx[i] = W[i][0] * ex[0] + W[i][1] * ex[1] + W[i][2] * ex[2];
-      ty[i] = W[i][0] * ey[0] + W[i][1] * ey[1] + W[i][2] * ey[2];
-      vx[i] = V[i][0] * ex[0] + V[i][1] * ex[1] + V[i][2] * ex[2] - zw[i] * ty[i];
-      vy[i] = V[i][0] * ey[0] + V[i][1] * ey[1] + V[i][2] * ey[2] + zw[i] * tx[i];
-      vz[i] = V[i][0] * e3[0] + V[i][1] * e3[1] + V[i][2] * e3[2];
+      for (std::size_t l = 0; l < n; ++l) {
+        b.X[i][l] -= hdt * b.VX[i][l];
+        b.Y[i][l] -= hdt * b.VY[i][l];
+        b.Z[i][l] -= hdt * b.VZ[i][l];
+      }
+    // Local frame: e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1.
+    for (std::size_t l = 0; l < n; ++l) {
+      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+      const double r42x = b.X[3][l] - b.X[1][l], r42y = b.Y[3][l] - b.Y[1][l], r42z = b.Z[3][l] - b.Z[1][l];
+      const double cx = r31y * r42z - r31z * r42y, cy = r31z * r42x - r31x * r42z, cz3 = r31x * r42y - r31y * r42x;
+      b.e3[0][l] = cx; b.e3[1][l] = cy; b.e3[2][l] = cz3;
+      const double s = cx * cx + cy * cy + cz3 * cz3;
+      b.sq[l] = s > 0.0 ? s : 1.0;  // folded to a line: finite stand-in (masked)
     }
-    const double A = 0.5 * ((x[2] - x[0]) * (y[3] - y[1]) - (x[3] - x[1]) * (y[2] - y[0]));
-    if (!(A > 0)) {  // folded or degenerate: reported, the core stops the run
-      if (tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
-      zero_slots();
-      continue;
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const double n3 = b.sq[l];
+      const double e3x = b.e3[0][l] * n3, e3y = b.e3[1][l] * n3, e3z = b.e3[2][l] * n3;
+      b.e3[0][l] = e3x; b.e3[1][l] = e3y; b.e3[2][l] = e3z;
+      const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
+      const double d21 = r21x * e3x + r21y * e3y + r21z * e3z;
+      const double ax = r21x - d21 * e3x, ay = r21y - d21 * e3y, az = r21z - d21 * e3z;
+      b.e1[0][l] = ax; b.e1[1][l] = ay; b.e1[2][l] = az;
+      const double s = ax * ax + ay * ay + az * az;
+      b.sq[l] = s > 0.0 ? s : 1.0;
     }
-    const double i2A = 0.5 / A;
-    const double B1[4] = {(y[1] - y[3]) * i2A, (y[2] - y[0]) * i2A, (y[3] - y[1]) * i2A, (y[0] - y[2]) * i2A};
-    const double B2[4] = {(x[3] - x[1]) * i2A, (x[0] - x[2]) * i2A, (x[1] - x[3]) * i2A, (x[2] - x[0]) * i2A};
-    double dxx = 0, dyy = 0, dxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0;
-    for (int i = 0; i < 4; ++i) {
-      dxx += B1[i] * vx[i];
-      dyy += B2[i] * vy[i];
-      dxy += B2[i] * vx[i] + B1[i] * vy[i];
-      kxx += B1[i] * ty[i];
-      kyy -= B2[i] * tx[i];
-      kxy += B2[i] * ty[i] - B1[i] * tx[i];
-      gxz += B1[i] * vz[i] + 0.25 * ty[i];
-      gyz += B2[i] * vz[i] - 0.25 * tx[i];
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const double n1 = b.sq[l];
+      const double e1x = b.e1[0][l] * n1, e1y = b.e1[1][l] * n1, e1z = b.e1[2][l] * n1;
+      b.e1[0][l] = e1x; b.e1[1][l] = e1y; b.e1[2][l] = e1z;
+      const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
+      b.e2[0][l] = e3y * e1z - e3z * e1y;
+      b.e2[1][l] = e3z * e1x - e3x * e1z;
+      b.e2[2][l] = e3x * e1y - e3y * e1x;
     }
-    const double t = g.thick[e];
-    const double dem[3] = {dxx * dt, dyy * dt, dxy * dt};
-    const double dk[3] = {kxx * dt, kyy * dt, kxy * dt};
-    ThicknessResult tr;
-    integrate_thickness(mat, sec, t, dem, dk, dt, &g.stress[e * np * 3], &g.epsp[e * np],
-                        nh ? &g.hist[e * np * nh] : nullptr, tr);
-    double* ex7 = &g.extra[e * 7];
-    // Transverse shear (elastic), scaled by the fraction of points still carrying stress.
-    const int nf = g.n_failed[e] + tr.newly_failed;
-    g.n_failed[e] = static_cast<std::uint8_t>(nf);
-    const double alive = static_cast<double>(np - nf) / np;
-    const double ks = sec.shear_factor * G * t * alive;
-    const double qx0 = ex7[0], qy0 = ex7[1];
-    ex7[0] += ks * gxz * dt;
-    ex7[1] += ks * gyz * dt;
-    double dE = A * tr.dE + 0.5 * A * dt * ((qx0 + ex7[0]) * gxz + (qy0 + ex7[1]) * gyz);
-    // Hourglass.
-    const double hx = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3] * x[3];
-    const double hy = h[0] * y[0] + h[1] * y[1] + h[2] * y[2] + h[3] * y[3];
-    double gam[4], qmx = 0, qmy = 0, qw = 0, qtx = 0, qty = 0, S = 0;
-    for (int i = 0; i < 4; ++i) {
-      gam[i] = h[i] - hx * B1[i] - hy * B2[i];
-      qmx += gam[i] * vx[i];
-      qmy += gam[i] * vy[i];
-      qw += gam[i] * (vz[i] + 0.5 * (x[i] * ty[i] - y[i] * tx[i]));
-      qtx += gam[i] * tx[i];
-      qty += gam[i] * ty[i];
-      S += B1[i] * B1[i] + B2[i] * B2[i];
+    // Local coordinates about the centre, velocities and rotations (projected by the
+    // rigid links of the warped nodes), area, ok mask.
+    for (std::size_t l = 0; l < n; ++l) {
+      double xc = 0.25 * b.X[0][l], yc = 0.25 * b.Y[0][l], zc = 0.25 * b.Z[0][l];
+      for (int i = 1; i < 4; ++i) {
+        xc += 0.25 * b.X[i][l];
+        yc += 0.25 * b.Y[i][l];
+        zc += 0.25 * b.Z[i][l];
+      }
+      const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
+      const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
+      const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
+      for (int i = 0; i < 4; ++i) {
+        const double d0 = b.X[i][l] - xc, d1 = b.Y[i][l] - yc, d2 = b.Z[i][l] - zc;
+        const double xi = d0 * e1x + d1 * e1y + d2 * e1z;
+        const double yi = d0 * e2x + d1 * e2y + d2 * e2z;
+        const double zi = d0 * e3x + d1 * e3y + d2 * e3z;
+        const double wx = b.WX[i][l], wy = b.WY[i][l], wz = b.WZ[i][l];
+        const double vgx = b.VX[i][l], vgy = b.VY[i][l], vgz = b.VZ[i][l];
+        const double txi = wx * e1x + wy * e1y + wz * e1z;
+        const double tyi = wx * e2x + wy * e2y + wz * e2z;
+        b.x[i][l] = xi; b.y[i][l] = yi; b.zw[i][l] = zi;
+        b.tx[i][l] = txi; b.ty[i][l] = tyi;
+        b.vx[i][l] = vgx * e1x + vgy * e1y + vgz * e1z - zi * tyi;
+        b.vy[i][l] = vgx * e2x + vgy * e2y + vgz * e2z + zi * txi;
+        b.vz[i][l] = vgx * e3x + vgy * e3y + vgz * e3z;
+      }
+      b.A[l] = 0.5 * ((b.x[2][l] - b.x[0][l]) * (b.y[3][l] - b.y[1][l]) -
+                      (b.x[3][l] - b.x[1][l]) * (b.y[2][l] - b.y[0][l]));
     }
-    S *= A;
-    const double cm = sec.hm * E * t * S * alive;
-    const double cb = E * t * t * t / 12.0 * S * alive;
-    const double cr = sec.hr * cb, cw = sec.hf * cb / A;
-    const double q0[5] = {ex7[2], ex7[3], ex7[4], ex7[5], ex7[6]};
-    ex7[2] += cm * qmx * dt;
-    ex7[3] += cm * qmy * dt;
-    ex7[4] += cw * qw * dt;
-    ex7[5] += cr * qtx * dt;
-    ex7[6] += cr * qty * dt;
-    const double dEhg = 0.5 * dt * ((q0[0] + ex7[2]) * qmx + (q0[1] + ex7[3]) * qmy +
-                                    (q0[2] + ex7[4]) * qw + (q0[3] + ex7[5]) * qtx +
-                                    (q0[4] + ex7[6]) * qty);
-    // Internal (resisting) nodal forces in the local frame.
-    const double Nxx = tr.N[0], Nyy = tr.N[1], Nxy = tr.N[2];
-    const double Mxx = tr.M[0], Myy = tr.M[1], Mxy = tr.M[2];
-    const double Qx = ex7[0], Qy = ex7[1];
-    const double Hmx = ex7[2], Hmy = ex7[3], Hw = ex7[4], Htx = ex7[5], Hty = ex7[6];
-    for (int i = 0; i < 4; ++i) {
-      const double fx = A * (B1[i] * Nxx + B2[i] * Nxy) + gam[i] * Hmx;
-      const double fy = A * (B2[i] * Nyy + B1[i] * Nxy) + gam[i] * Hmy;
-      const double fz = A * (B1[i] * Qx + B2[i] * Qy) + gam[i] * Hw;
-      // Moments conjugate to thx, thy (the transverse hourglass term includes its
-      // rotation part (x thy - y thx)/2).
-      double mx = -A * (B2[i] * Myy + B1[i] * Mxy + 0.25 * Qy) + gam[i] * (Htx - 0.5 * y[i] * Hw);
-      double my = A * (B1[i] * Mxx + B2[i] * Mxy + 0.25 * Qx) + gam[i] * (Hty + 0.5 * x[i] * Hw);
-      mx += zw[i] * fy;  // rigid-link moments (warping)
-      my -= zw[i] * fx;
-      // Force ON the node = minus the internal force, back to the global frame.
-      const std::size_t s = s0 + static_cast<std::size_t>(i);
-      out.fx[s] = -(fx * ex[0] + fy * ey[0] + fz * e3[0]);
-      out.fy[s] = -(fx * ex[1] + fy * ey[1] + fz * e3[1]);
-      out.fz[s] = -(fx * ex[2] + fy * ey[2] + fz * e3[2]);
-      out.mx[s] = -(mx * ex[0] + my * ey[0]);
-      out.my[s] = -(mx * ex[1] + my * ey[1]);
-      out.mz[s] = -(mx * ex[2] + my * ey[2]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      const bool good = !g.deleted[e] && b.A[l] > 0.0;
+      if (!g.deleted[e] && !(b.A[l] > 0.0) && tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
+      b.ok[l] = good ? 1.0 : 0.0;
+      b.A[l] = good ? b.A[l] : 1.0;
     }
-    g.eint[e] += dE;
-    g.ehg[e] += dEhg;
-    tot.de_int += dE;
-    tot.de_hg += dEhg;
-    if (sec.thickness_change) g.thick[e] = t * (1.0 + tr.dezz);
-    g.area[e] = A;
-    double lmax2 = 0;
-    for (int i = 0; i < 4; ++i) {
-      const int j = (i + 1) & 3;
-      double l2 = 0;
-      for (int k = 0; k < 3; ++k) l2 += (X[j][k] - X[i][k]) * (X[j][k] - X[i][k]);
-      lmax2 = std::max(lmax2, l2);
+    // B matrix, membrane / curvature / transverse shear rates.
+    for (std::size_t l = 0; l < n; ++l) {
+      const double i2A = 0.5 / b.A[l];
+      const double x0 = b.x[0][l], x1 = b.x[1][l], x2 = b.x[2][l], x3 = b.x[3][l];
+      const double y0 = b.y[0][l], y1 = b.y[1][l], y2 = b.y[2][l], y3 = b.y[3][l];
+      b.B1[0][l] = (y1 - y3) * i2A; b.B1[1][l] = (y2 - y0) * i2A; b.B1[2][l] = (y3 - y1) * i2A; b.B1[3][l] = (y0 - y2) * i2A;
+      b.B2[0][l] = (x3 - x1) * i2A; b.B2[1][l] = (x0 - x2) * i2A; b.B2[2][l] = (x1 - x3) * i2A; b.B2[3][l] = (x2 - x0) * i2A;
+      double dxx = 0, dyy = 0, dxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0;
+      for (int i = 0; i < 4; ++i) {
+        const double B1 = b.B1[i][l], B2 = b.B2[i][l];
+        dxx += B1 * b.vx[i][l];
+        dyy += B2 * b.vy[i][l];
+        dxy += B2 * b.vx[i][l] + B1 * b.vy[i][l];
+        kxx += B1 * b.ty[i][l];
+        kyy -= B2 * b.tx[i][l];
+        kxy += B2 * b.ty[i][l] - B1 * b.tx[i][l];
+        gxz += B1 * b.vz[i][l] + 0.25 * b.ty[i][l];
+        gyz += B2 * b.vz[i][l] - 0.25 * b.tx[i][l];
+      }
+      b.th.dem[0][l] = dxx * dt; b.th.dem[1][l] = dyy * dt; b.th.dem[2][l] = dxy * dt;
+      b.th.dk[0][l] = kxx * dt; b.th.dk[1][l] = kyy * dt; b.th.dk[2][l] = kxy * dt;
+      b.gxz[l] = gxz; b.gyz[l] = gyz;
     }
-    g.dt_elem[e] = A / std::sqrt(lmax2) / cwave;
-    if (g.dt_elem[e] < tot.dt_min) {
-      tot.dt_min = g.dt_elem[e];
-      tot.dt_element = static_cast<std::int64_t>(e);
+    // Through the thickness.
+    b.th.integrate(g, idx, b.ok, n, dt);
+    // Transverse shear (elastic, scaled by the fraction of points still carrying stress),
+    // hourglass (stiffness form), stored resultants, energies.
+    const double shear_G = sec.shear_factor * G;
+    for (std::size_t l = 0; l < n; ++l) {
+      const double A = b.A[l], t = b.th.t[l];
+      const double alive = (static_cast<double>(np) - b.th.nfail[l]) / np;
+      b.alive[l] = alive;
+      const double ks = shear_G * t * alive;
+      const double gxz = b.gxz[l], gyz = b.gyz[l];
+      const double qx0 = b.q[0][l], qy0 = b.q[1][l];
+      const double qx1 = qx0 + ks * gxz * dt, qy1 = qy0 + ks * gyz * dt;
+      b.q[0][l] = qx1;
+      b.q[1][l] = qy1;
+      b.th.dE[l] = A * b.th.dE[l] + 0.5 * A * dt * ((qx0 + qx1) * gxz + (qy0 + qy1) * gyz);
+      const double x0 = b.x[0][l], x1 = b.x[1][l], x2 = b.x[2][l], x3 = b.x[3][l];
+      const double y0 = b.y[0][l], y1 = b.y[1][l], y2 = b.y[2][l], y3 = b.y[3][l];
+      // h = (1, -1, 1, -1): h.x = x0 - x1 + x2 - x3.
+      const double hx = ((x0 - x1) + x2) - x3;
+      const double hy = ((y0 - y1) + y2) - y3;
+      double qmx = 0, qmy = 0, qw = 0, qtx = 0, qty = 0, S = 0;
+      for (int i = 0; i < 4; ++i) {
+        const double hi = (i & 1) ? -1.0 : 1.0;
+        const double B1 = b.B1[i][l], B2 = b.B2[i][l];
+        const double gi = hi - hx * B1 - hy * B2;
+        b.gam[i][l] = gi;
+        qmx += gi * b.vx[i][l];
+        qmy += gi * b.vy[i][l];
+        qw += gi * (b.vz[i][l] + 0.5 * (b.x[i][l] * b.ty[i][l] - b.y[i][l] * b.tx[i][l]));
+        qtx += gi * b.tx[i][l];
+        qty += gi * b.ty[i][l];
+        S += B1 * B1 + B2 * B2;
+      }
+      S *= A;
+      const double cm = sec.hm * E * t * S * alive;
+      const double cb = E * t * t * t / 12.0 * S * alive;
+      const double cr = sec.hr * cb, cw = sec.hf * cb / A;
+      const double h0 = b.q[2][l], h1 = b.q[3][l], h2 = b.q[4][l], h3 = b.q[5][l], h4 = b.q[6][l];
+      const double n0 = h0 + cm * qmx * dt, n1 = h1 + cm * qmy * dt, n2 = h2 + cw * qw * dt,
+                   n3 = h3 + cr * qtx * dt, n4 = h4 + cr * qty * dt;
+      b.q[2][l] = n0; b.q[3][l] = n1; b.q[4][l] = n2; b.q[5][l] = n3; b.q[6][l] = n4;
+      b.dEhg[l] = 0.5 * dt * ((h0 + n0) * qmx + (h1 + n1) * qmy + (h2 + n2) * qw + (h3 + n3) * qtx + (h4 + n4) * qty);
     }
-    if (nf >= sec.points_to_delete()) {
-      g.deleted[e] = 1;
-      ++tot.newly_deleted;
+    // Internal (resisting) nodal forces in the local frame; the force and moment ON the
+    // node (minus the internal ones) in the global frame.
+    for (std::size_t l = 0; l < n; ++l)
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const double A = b.A[l], B1 = b.B1[i][l], B2 = b.B2[i][l], gi = b.gam[i][l];
+        const double Nxx = b.th.N[0][l], Nyy = b.th.N[1][l], Nxy = b.th.N[2][l];
+        const double Mxx = b.th.M[0][l], Myy = b.th.M[1][l], Mxy = b.th.M[2][l];
+        const double Qx = b.q[0][l], Qy = b.q[1][l];
+        const double Hmx = b.q[2][l], Hmy = b.q[3][l], Hw = b.q[4][l], Htx = b.q[5][l], Hty = b.q[6][l];
+        const double fx = A * (B1 * Nxx + B2 * Nxy) + gi * Hmx;
+        const double fy = A * (B2 * Nyy + B1 * Nxy) + gi * Hmy;
+        const double fz = A * (B1 * Qx + B2 * Qy) + gi * Hw;
+        // Moments conjugate to thx, thy (the transverse hourglass term includes its
+        // rotation part (x thy - y thx)/2), plus the rigid-link moments (warping).
+        double mx = -A * (B2 * Myy + B1 * Mxy + 0.25 * Qy) + gi * (Htx - 0.5 * b.y[i][l] * Hw);
+        double my = A * (B1 * Mxx + B2 * Mxy + 0.25 * Qx) + gi * (Hty + 0.5 * b.x[i][l] * Hw);
+        mx += b.zw[i][l] * fy;
+        my -= b.zw[i][l] * fx;
+        const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
+        const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
+        const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
+        const bool ok = b.ok[l] != 0.0;
+        b.f[0][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1x + fy * e2x + fz * e3x) : 0.0;
+        b.f[1][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1y + fy * e2y + fz * e3y) : 0.0;
+        b.f[2][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1z + fy * e2z + fz * e3z) : 0.0;
+        b.f[3][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1x + my * e2x) : 0.0;
+        b.f[4][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1y + my * e2y) : 0.0;
+        b.f[5][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1z + my * e2z) : 0.0;
+      }
+    // Stable step A / longest side / c on the mid-step geometry.
+    for (std::size_t l = 0; l < n; ++l) {
+      double lmax2 = 0;
+      for (int i = 0; i < 4; ++i) {
+        const int j = (i + 1) & 3;
+        const double dx = b.X[j][l] - b.X[i][l], dy = b.Y[j][l] - b.Y[i][l], dz = b.Z[j][l] - b.Z[i][l];
+        const double l2 = ((0.0 + dx * dx) + dy * dy) + dz * dz;
+        lmax2 = std::max(lmax2, l2);
+      }
+      b.lmax2[l] = lmax2 > 0.0 ? lmax2 : 1.0;
+    }
+    for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
+    for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
+    // Scatter the slots (a copy when the batch's elements are consecutive) and write the
+    // state back (masked lanes: zero slots; deleted elements no step; folded ones keep
+    // their state).
+    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
+    if (static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1) {
+      const std::size_t s0 = static_cast<std::size_t>(idx[0]) * 4;
+      for (int c = 0; c < 6; ++c) std::copy_n(b.f[c], 4 * n, slot_out[c] + s0);
+    } else {
+      for (std::size_t l = 0; l < n; ++l)
+        for (int c = 0; c < 6; ++c)
+          std::copy_n(b.f[c] + 4 * l, 4, slot_out[c] + static_cast<std::size_t>(idx[l]) * 4);
+    }
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      if (g.deleted[e]) {
+        g.dt_elem[e] = 1e300;
+        continue;
+      }
+      if (b.ok[l] == 0.0) continue;
+      double* ex7 = &g.extra[e * 7];
+      for (int c = 0; c < 7; ++c) ex7[c] = b.q[c][l];
+      const int nf = static_cast<int>(b.th.nfail[l]);
+      g.n_failed[e] = static_cast<std::uint8_t>(nf);
+      g.eint[e] += b.th.dE[l];
+      g.ehg[e] += b.dEhg[l];
+      tot.de_int += b.th.dE[l];
+      tot.de_hg += b.dEhg[l];
+      if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
+      g.area[e] = b.A[l];
+      g.dt_elem[e] = b.dte[l];
+      if (b.dte[l] < tot.dt_min) {
+        tot.dt_min = b.dte[l];
+        tot.dt_element = static_cast<std::int64_t>(e);
+      }
+      if (nf >= sec.points_to_delete()) {
+        g.deleted[e] = 1;
+        ++tot.newly_deleted;
+      }
     }
   }
   return tot;

@@ -22,8 +22,13 @@
 // elastic material and costs one material evaluation per through-thickness point.
 // Drilling rotations carry no stiffness (Radioss Idrill = 0); they are kept bounded by
 // the nodal rotational inertia.
+//
+// Lanes: as the quad kernel (shell_quad_bt.cpp), the elements are computed in batches
+// of TriaLanes::W (element k of the batch is lane k), every stage a loop over the lanes
+// that GCC vectorises; deleted or degenerate elements are masked on output; each lane
+// does the arithmetic of the one-element formulas in the same order.
 #include "shells/shell_group_data.hpp"
-#include "shells/shell_through_thickness.hpp"
+#include "shells/shell_thickness_lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,202 +59,317 @@ constexpr QuadraticDerivs kQD{};
 // Side k (mid-side node 3+k) joins corners kSide[k][0] -> kSide[k][1].
 constexpr int kSide[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 
+// One batch of triangles as lanes (thread_local, about 50 KB).
+struct TriaLanes {
+  static constexpr std::size_t W = 32;
+  alignas(64) std::int32_t node[3][W];
+  alignas(64) double X[3][W], Y[3][W], Z[3][W];        // mid-step positions
+  alignas(64) double VX[3][W], VY[3][W], VZ[3][W];     // velocities (global)
+  alignas(64) double WX[3][W], WY[3][W], WZ[3][W];     // angular velocities (global)
+  alignas(64) double ex[3][W], ey[3][W], ez[3][W];     // local frame
+  alignas(64) double x2[W], y2[W], l21[W];             // local coordinates of nodes 2, 3
+  alignas(64) double vx[3][W], vy[3][W], w[3][W], bx[3][W], by[3][W];
+  alignas(64) double B1[3][W], B2[3][W];
+  alignas(64) double sc[3][W], ss[3][W], sl[3][W];     // sides: cos, sin, length
+  alignas(64) double Bx[6][W], By[6][W];               // rotation rates at the 6 nodes
+  alignas(64) double dNx[3][6][W], dNy[3][6][W], kap[3][3][W];
+  alignas(64) double A[W], i2A[W], ok[W], sq[W], dEdev[W], lmax2[W], dte[W];
+  alignas(64) double md[9][W];                         // extra: deviatoric moments at the points
+  alignas(64) double Fx[6][W], Fy[6][W], Fw[3][W];
+  ThicknessLanes<W> th;
+  alignas(64) double f[6][W * 3];                      // force, moment ON the nodes, global,
+                                                       // slot order (lane * 3 + node)
+};
+
 }  // namespace
 
 ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
-                                 const ShellSlotOut& out, double dt,
-                                 std::span<const std::int32_t> elements) {
+                                  const ShellSlotOut& out, double dt,
+                                  std::span<const std::int32_t> elements) {
   ShellKernelTotals tot;
   const ShellMaterial& mat = g.mat;
   const ShellSection& sec = g.sec;
   const int np = sec.n_points;
-  const int nh = mat.n_history();
   const double E = mat.young(), nu = mat.poisson();
   const double cwave = mat.plate_wave_speed();
+  const double hdt = 0.5 * dt;
+  static thread_local TriaLanes lanes;
+  TriaLanes& b = lanes;
+  constexpr std::size_t W = TriaLanes::W;
 
-  for (const std::int32_t el : elements) {
-    const auto e = static_cast<std::size_t>(el);
-    const std::size_t s0 = e * 3;
-    auto zero_slots = [&] {
-      for (std::size_t s = s0; s < s0 + 3; ++s)
-        out.fx[s] = out.fy[s] = out.fz[s] = out.mx[s] = out.my[s] = out.mz[s] = 0.0;
+  for (std::size_t k0 = 0; k0 < elements.size(); k0 += W) {
+    const std::size_t n = std::min(W, elements.size() - k0);
+    const std::int32_t* idx = elements.data() + k0;
+    // Gather: mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2} (the velocity gradient
+    // of a rigid rotation is then skew, so rotations strain nothing), v, omega, state.
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      for (int i = 0; i < 3; ++i) b.node[i][l] = g.conn[e * 3 + static_cast<std::size_t>(i)];
+      b.th.t[l] = g.thick[e];
+      b.th.nfail[l] = g.n_failed[e];
+      const double* m9 = &g.extra[e * 9];
+      for (int c = 0; c < 9; ++c) b.md[c][l] = m9[c];
+    }
+    const auto gather = [&](const double* __restrict a, double (*lane)[W]) {
+      for (int i = 0; i < 3; ++i)
+        for (std::size_t l = 0; l < n; ++l) lane[i][l] = a[b.node[i][l]];
     };
-    if (g.deleted[e]) {
-      zero_slots();
-      g.dt_elem[e] = 1e300;
-      continue;
+    gather(nv.vx, b.VX); gather(nv.vy, b.VY); gather(nv.vz, b.VZ);
+    gather(nv.wx, b.WX); gather(nv.wy, b.WY); gather(nv.wz, b.WZ);
+    gather(nv.x, b.X); gather(nv.y, b.Y); gather(nv.z, b.Z);
+    for (int i = 0; i < 3; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        b.X[i][l] -= hdt * b.VX[i][l];
+        b.Y[i][l] -= hdt * b.VY[i][l];
+        b.Z[i][l] -= hdt * b.VZ[i][l];
+      }
+    // Local frame: e1 along node 1 -> 2, e3 = r21 x r31 / |.|, e2 = e3 x e1; area.
+    for (std::size_t l = 0; l < n; ++l) {
+      const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
+      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+      const double cx = r21y * r31z - r21z * r31y, cy = r21z * r31x - r21x * r31z, cz = r21x * r31y - r21y * r31x;
+      b.ez[0][l] = cx; b.ez[1][l] = cy; b.ez[2][l] = cz;
+      b.sq[l] = cx * cx + cy * cy + cz * cz;
+      b.l21[l] = r21x * r21x + r21y * r21y + r21z * r21z;
     }
-    const std::int32_t* cn = &g.conn[e * 3];
-    double X[3][3], V[3][3], W[3][3];
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = std::sqrt(b.sq[l]);
+    for (std::size_t l = 0; l < n; ++l) b.l21[l] = std::sqrt(b.l21[l]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      const double A = 0.5 * b.sq[l];
+      const bool good = !g.deleted[e] && A > 0.0 && b.l21[l] > 0.0;
+      if (!g.deleted[e] && !(A > 0.0) && tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
+      b.ok[l] = good ? 1.0 : 0.0;
+      b.A[l] = good ? A : 1.0;  // masked lanes: finite stand-ins
+      b.sq[l] = good ? b.sq[l] : 1.0;
+      b.l21[l] = good ? b.l21[l] : 1.0;
+    }
+    for (std::size_t l = 0; l < n; ++l) {
+      const double nz = b.sq[l], l21 = b.l21[l];
+      const double ezx = b.ez[0][l] / nz, ezy = b.ez[1][l] / nz, ezz = b.ez[2][l] / nz;
+      b.ez[0][l] = ezx; b.ez[1][l] = ezy; b.ez[2][l] = ezz;
+      const double exx = (b.X[1][l] - b.X[0][l]) / l21, exy = (b.Y[1][l] - b.Y[0][l]) / l21,
+                   exz = (b.Z[1][l] - b.Z[0][l]) / l21;
+      b.ex[0][l] = exx; b.ex[1][l] = exy; b.ex[2][l] = exz;
+      const double eyx = ezy * exz - ezz * exy, eyy = ezz * exx - ezx * exz, eyz = ezx * exy - ezy * exx;
+      b.ey[0][l] = eyx; b.ey[1][l] = eyy; b.ey[2][l] = eyz;
+      // Local coordinates: node 1 at the origin, node 2 on the x axis.
+      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+      b.x2[l] = r31x * exx + r31y * exy + r31z * exz;
+      b.y2[l] = r31x * eyx + r31y * eyy + r31z * eyz;
+      for (int i = 0; i < 3; ++i) {
+        const double Vx = b.VX[i][l], Vy = b.VY[i][l], Vz = b.VZ[i][l];
+        const double Wx = b.WX[i][l], Wy = b.WY[i][l], Wz = b.WZ[i][l];
+        b.vx[i][l] = Vx * exx + Vy * exy + Vz * exz;
+        b.vy[i][l] = Vx * eyx + Vy * eyy + Vz * eyz;
+        b.w[i][l] = Vx * ezx + Vy * ezy + Vz * ezz;
+        b.bx[i][l] = Wx * eyx + Wy * eyy + Wz * eyz;     // beta_x = th_y
+        b.by[i][l] = -(Wx * exx + Wy * exy + Wz * exz);  // beta_y = -th_x
+      }
+    }
+    // CST membrane; DKT side geometry (lengths in a loop of their own).
+    for (std::size_t l = 0; l < n; ++l) {
+      const double x[3] = {0.0, b.l21[l], b.x2[l]}, y[3] = {0.0, 0.0, b.y2[l]};
+      const double i2A = 0.5 / b.A[l];
+      b.B1[0][l] = (y[1] - y[2]) * i2A; b.B1[1][l] = (y[2] - y[0]) * i2A; b.B1[2][l] = (y[0] - y[1]) * i2A;
+      b.B2[0][l] = (x[2] - x[1]) * i2A; b.B2[1][l] = (x[0] - x[2]) * i2A; b.B2[2][l] = (x[1] - x[0]) * i2A;
+      double dxx = 0, dyy = 0, dxy = 0;
+      for (int i = 0; i < 3; ++i) {
+        dxx += b.B1[i][l] * b.vx[i][l];
+        dyy += b.B2[i][l] * b.vy[i][l];
+        dxy += b.B2[i][l] * b.vx[i][l] + b.B1[i][l] * b.vy[i][l];
+      }
+      b.th.dem[0][l] = dxx * dt; b.th.dem[1][l] = dyy * dt; b.th.dem[2][l] = dxy * dt;
+      for (int k = 0; k < 3; ++k) {
+        const int i = kSide[k][0], j = kSide[k][1];
+        const double dx = x[j] - x[i], dy = y[j] - y[i];
+        b.sc[k][l] = dx;
+        b.ss[k][l] = dy;
+        const double s = dx * dx + dy * dy;
+        b.sl[k][l] = s > 0.0 ? s : 1.0;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
+    // DKT: rotation rates at the 6 nodes, curvatures at the 3 Hammer points (loops with
+    // the lanes innermost: side, node and point indices are constants of each loop).
     for (int i = 0; i < 3; ++i) {
-      const auto n = cn[i];
-      X[i][0] = nv.x[n]; X[i][1] = nv.y[n]; X[i][2] = nv.z[n];
-      V[i][0] = nv.vx[n]; V[i][1] = nv.vy[n]; V[i][2] = nv.vz[n];
-      W[i][0] = nv.wx[n]; W[i][1] = nv.wy[n]; W[i][2] = nv.wz[n];
-      // Mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2}: the velocity gradient of a
-      // rigid rotation is then skew (Cayley transform), so rotations strain nothing.
-      for (int k = 0; k < 3; ++k) X[i][k] -= 0.5 * dt * V[i][k];
+      std::copy_n(b.bx[i], n, b.Bx[i]);
+      std::copy_n(b.by[i], n, b.By[i]);
     }
-    double r21[3], r31[3], ex[3], ey[3], ez[3];
-    for (int k = 0; k < 3; ++k) {
-      r21[k] = X[1][k] - X[0][k];
-      r31[k] = X[2][k] - X[0][k];
-    }
-    ez[0] = r21[1] * r31[2] - r21[2] * r31[1];
-    ez[1] = r21[2] * r31[0] - r21[0] * r31[2];
-    ez[2] = r21[0] * r31[1] - r21[1] * r31[0];
-    const double nz = std::sqrt(ez[0] * ez[0] + ez[1] * ez[1] + ez[2] * ez[2]);
-    const double A = 0.5 * nz;
-    if (!(A > 0)) {  // degenerate (collapsed) triangle: reported, the core stops the run
-      if (tot.inverted < 0) tot.inverted = static_cast<std::int64_t>(e);
-      zero_slots();
-      continue;
-    }
-    for (double& c : ez) c /= nz;
-    const double l21 = std::sqrt(r21[0] * r21[0] + r21[1] * r21[1] + r21[2] * r21[2]);
-    for (int k = 0; k < 3; ++k) ex[k] = r21[k] / l21;
-    ey[0] = ez[1] * ex[2] - ez[2] * ex[1];
-    ey[1] = ez[2] * ex[0] - ez[0] * ex[2];
-    ey[2] = ez[0] * ex[1] - ez[1] * ex[0];
-    // Local coordinates: node 1 at the origin, node 2 on the x axis.
-    const double x[3] = {0.0, l21, r31[0] * ex[0] + r31[1] * ex[1] + r31[2] * ex[2]};
-    const double y[3] = {0.0, 0.0, r31[0] * ey[0] + r31[1] * ey[1] + r31[2] * ey[2]};
-    double vx[3], vy[3], w[3], bx[3], by[3];
-    for (int i = 0; i < 3; ++i) {
-      vx[i] = V[i][0] * ex[0] + V[i][1] * ex[1] + V[i][2] * ex[2];
-      vy[i] = V[i][0] * ey[0] + V[i][1] * ey[1] + V[i][2] * ey[2];
-      w[i] = V[i][0] * ez[0] + V[i][1] * ez[1] + V[i][2] * ez[2];
-      bx[i] = W[i][0] * ey[0] + W[i][1] * ey[1] + W[i][2] * ey[2];     // beta_x = th_y
-      by[i] = -(W[i][0] * ex[0] + W[i][1] * ex[1] + W[i][2] * ex[2]);  // beta_y = -th_x
-    }
-    // CST membrane.
-    const double i2A = 0.5 / A;
-    const double B1[3] = {(y[1] - y[2]) * i2A, (y[2] - y[0]) * i2A, (y[0] - y[1]) * i2A};
-    const double B2[3] = {(x[2] - x[1]) * i2A, (x[0] - x[2]) * i2A, (x[1] - x[0]) * i2A};
-    double dxx = 0, dyy = 0, dxy = 0;
-    for (int i = 0; i < 3; ++i) {
-      dxx += B1[i] * vx[i];
-      dyy += B2[i] * vy[i];
-      dxy += B2[i] * vx[i] + B1[i] * vy[i];
-    }
-    // DKT: rotation rates at the 6 nodes.
-    double Bx[6], By[6], sc[3], ss[3], sl[3];
-    for (int i = 0; i < 3; ++i) { Bx[i] = bx[i]; By[i] = by[i]; }
     for (int k = 0; k < 3; ++k) {
       const int i = kSide[k][0], j = kSide[k][1];
-      const double dx = x[j] - x[i], dy = y[j] - y[i];
-      const double l = std::sqrt(dx * dx + dy * dy);
-      const double c = dx / l, s = dy / l;
-      sc[k] = c; ss[k] = s; sl[k] = l;
-      const double bs = -1.5 / l * (w[j] - w[i]) - 0.25 * (c * (bx[i] + bx[j]) + s * (by[i] + by[j]));
-      const double bn = 0.5 * (-s * (bx[i] + bx[j]) + c * (by[i] + by[j]));
-      Bx[3 + k] = c * bs - s * bn;
-      By[3 + k] = s * bs + c * bn;
-    }
-    // Cartesian derivatives at the 3 points: d/dx = (y31 d/dxi - y21 d/deta)/2A, ...
-    const double x21 = x[1] - x[0], x31 = x[2] - x[0], y21 = y[1] - y[0], y31 = y[2] - y[0];
-    double dNx[3][6], dNy[3][6], kap[3][3];
-    for (int gp = 0; gp < 3; ++gp) {
-      double k0 = 0, k1 = 0, k2 = 0;
-      for (int a = 0; a < 6; ++a) {
-        const double nx = (y31 * kQD.dxi[gp][a] - y21 * kQD.deta[gp][a]) * i2A;
-        const double ny = (-x31 * kQD.dxi[gp][a] + x21 * kQD.deta[gp][a]) * i2A;
-        dNx[gp][a] = nx;
-        dNy[gp][a] = ny;
-        k0 += nx * Bx[a];
-        k1 += ny * By[a];
-        k2 += ny * Bx[a] + nx * By[a];
+      double *__restrict sc = b.sc[k], *__restrict ss = b.ss[k];
+      const double* __restrict sl = b.sl[k];
+      const double *__restrict bxi = b.bx[i], *__restrict bxj = b.bx[j], *__restrict byi = b.by[i],
+                                *__restrict byj = b.by[j], *__restrict wi = b.w[i], *__restrict wj = b.w[j];
+      double *__restrict Bxk = b.Bx[3 + k], *__restrict Byk = b.By[3 + k];
+      for (std::size_t l = 0; l < n; ++l) {
+        const double len = sl[l];
+        const double c = sc[l] / len, s = ss[l] / len;
+        sc[l] = c;
+        ss[l] = s;
+        const double bs = -1.5 / len * (wj[l] - wi[l]) - 0.25 * (c * (bxi[l] + bxj[l]) + s * (byi[l] + byj[l]));
+        const double bn = 0.5 * (-s * (bxi[l] + bxj[l]) + c * (byi[l] + byj[l]));
+        Bxk[l] = c * bs - s * bn;
+        Byk[l] = s * bs + c * bn;
       }
-      kap[gp][0] = k0; kap[gp][1] = k1; kap[gp][2] = k2;
     }
-    const double kc[3] = {(kap[0][0] + kap[1][0] + kap[2][0]) / 3.0,
-                          (kap[0][1] + kap[1][1] + kap[2][1]) / 3.0,
-                          (kap[0][2] + kap[1][2] + kap[2][2]) / 3.0};
-    const double t = g.thick[e];
-    const double dem[3] = {dxx * dt, dyy * dt, dxy * dt};
-    const double dk[3] = {kc[0] * dt, kc[1] * dt, kc[2] * dt};
-    ThicknessResult tr;
-    integrate_thickness(mat, sec, t, dem, dk, dt, &g.stress[e * np * 3], &g.epsp[e * np],
-                        nh ? &g.hist[e * np * nh] : nullptr, tr);
-    const int nf = g.n_failed[e] + tr.newly_failed;
-    g.n_failed[e] = static_cast<std::uint8_t>(nf);
-    const double alive = static_cast<double>(np - nf) / np;
+    // Cartesian derivatives at the 3 points: d/dx = (y31 d/dxi - y21 d/deta)/2A,
+    // d/dy = (-x31 d/dxi + x21 d/deta)/2A (local x21 = l21, x31 = x2, y21 = 0, y31 = y2).
+    for (std::size_t l = 0; l < n; ++l) b.i2A[l] = 0.5 / b.A[l];
+    for (int gp = 0; gp < 3; ++gp) {
+      double *__restrict q0 = b.kap[gp][0], *__restrict q1 = b.kap[gp][1], *__restrict q2 = b.kap[gp][2];
+      std::fill_n(q0, n, 0.0);
+      std::fill_n(q1, n, 0.0);
+      std::fill_n(q2, n, 0.0);
+      for (int a = 0; a < 6; ++a) {
+        const double dxi = kQD.dxi[gp][a], deta = kQD.deta[gp][a];
+        const double *__restrict i2A = b.i2A, *__restrict x21 = b.l21, *__restrict x31 = b.x2, *__restrict y31 = b.y2;
+        const double *__restrict Bxa = b.Bx[a], *__restrict Bya = b.By[a];
+        double *__restrict dNx = b.dNx[gp][a], *__restrict dNy = b.dNy[gp][a];
+#pragma GCC ivdep
+        for (std::size_t l = 0; l < n; ++l) {
+          const double nx = y31[l] * dxi * i2A[l];  // y21 = 0
+          const double ny = (-x31[l] * dxi + x21[l] * deta) * i2A[l];
+          dNx[l] = nx;
+          dNy[l] = ny;
+          q0[l] += nx * Bxa[l];
+          q1[l] += ny * Bya[l];
+          q2[l] += ny * Bxa[l] + nx * Bya[l];
+        }
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t l = 0; l < n; ++l) {
+        const double kc = (b.kap[0][c][l] + b.kap[1][c][l] + b.kap[2][c][l]) / 3.0;
+        b.th.dk[c][l] = kc * dt;
+      }
+    // Through the thickness (centroid curvature kc).
+    b.th.integrate(g, idx, b.ok, n, dt);
     // Elastic moments of the linear curvature part (plate stiffness D_b, bending only
-    // when there is more than one point through the thickness).
-    double* md = &g.extra[e * 9];
-    const double Db = np > 1 ? E * t * t * t / (12.0 * (1.0 - nu * nu)) * alive : 0.0;
-    double dEdev = 0;
-    double Mg[3][3];
-    for (int gp = 0; gp < 3; ++gp) {
-      const double d0 = (kap[gp][0] - kc[0]) * dt, d1 = (kap[gp][1] - kc[1]) * dt,
-                   d2 = (kap[gp][2] - kc[2]) * dt;
-      double* m = md + 3 * gp;
-      const double o0 = m[0], o1 = m[1], o2 = m[2];
-      m[0] += Db * (d0 + nu * d1);
-      m[1] += Db * (nu * d0 + d1);
-      m[2] += Db * 0.5 * (1.0 - nu) * d2;
-      dEdev += 0.5 * ((o0 + m[0]) * d0 + (o1 + m[1]) * d1 + (o2 + m[2]) * d2);
-      Mg[gp][0] = tr.M[0] + m[0];
-      Mg[gp][1] = tr.M[1] + m[1];
-      Mg[gp][2] = tr.M[2] + m[2];
-    }
-    // Generalised forces on the 6-node rotations: F = A/3 sum_g dN^T M_g.
-    double Fx[6] = {}, Fy[6] = {};
-    const double A3 = A / 3.0;
-    for (int gp = 0; gp < 3; ++gp)
-      for (int a = 0; a < 6; ++a) {
-        Fx[a] += A3 * (dNx[gp][a] * Mg[gp][0] + dNy[gp][a] * Mg[gp][2]);
-        Fy[a] += A3 * (dNy[gp][a] * Mg[gp][1] + dNx[gp][a] * Mg[gp][2]);
+    // with more than one point through the thickness); generalised forces on the
+    // 6-node rotations F = A/3 sum_g dN^T M_g; Kirchhoff constraints transposed onto the
+    // corner DOFs (w, beta_x, beta_y).
+    for (std::size_t l = 0; l < n; ++l) {
+      const double t = b.th.t[l];
+      const double alive = (static_cast<double>(np) - b.th.nfail[l]) / np;
+      const double Db = np > 1 ? E * t * t * t / (12.0 * (1.0 - nu * nu)) * alive : 0.0;
+      double kc[3];
+      for (int c = 0; c < 3; ++c) kc[c] = (b.kap[0][c][l] + b.kap[1][c][l] + b.kap[2][c][l]) / 3.0;
+      double dEdev = 0;
+      double Mg[3][3];
+      for (int gp = 0; gp < 3; ++gp) {
+        const double d0 = (b.kap[gp][0][l] - kc[0]) * dt, d1 = (b.kap[gp][1][l] - kc[1]) * dt,
+                     d2 = (b.kap[gp][2][l] - kc[2]) * dt;
+        const double o0 = b.md[3 * gp][l], o1 = b.md[3 * gp + 1][l], o2 = b.md[3 * gp + 2][l];
+        const double m0 = o0 + Db * (d0 + nu * d1);
+        const double m1 = o1 + Db * (nu * d0 + d1);
+        const double m2 = o2 + Db * 0.5 * (1.0 - nu) * d2;
+        b.md[3 * gp][l] = m0; b.md[3 * gp + 1][l] = m1; b.md[3 * gp + 2][l] = m2;
+        dEdev += 0.5 * ((o0 + m0) * d0 + (o1 + m1) * d1 + (o2 + m2) * d2);
+        Mg[gp][0] = b.th.M[0][l] + m0;
+        Mg[gp][1] = b.th.M[1][l] + m1;
+        Mg[gp][2] = b.th.M[2][l] + m2;
       }
-    // Transpose of the Kirchhoff constraints onto the corner DOFs (w, beta_x, beta_y).
-    double Fw[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k) {
-      const int i = kSide[k][0], j = kSide[k][1];
-      const double c = sc[k], s = ss[k], l = sl[k];
-      const double Fs = c * Fx[3 + k] + s * Fy[3 + k];
-      const double Fn = -s * Fx[3 + k] + c * Fy[3 + k];
-      Fw[j] -= 1.5 / l * Fs;
-      Fw[i] += 1.5 / l * Fs;
-      const double gx = -0.25 * c * Fs - 0.5 * s * Fn;  // d/d beta_x(i) and (j)
-      const double gy = -0.25 * s * Fs + 0.5 * c * Fn;
-      Fx[i] += gx; Fx[j] += gx;
-      Fy[i] += gy; Fy[j] += gy;
+      b.dEdev[l] = dEdev;
+      const double A3 = b.A[l] / 3.0;
+      double Fx[6] = {}, Fy[6] = {};
+      for (int gp = 0; gp < 3; ++gp)
+        for (int a = 0; a < 6; ++a) {
+          Fx[a] += A3 * (b.dNx[gp][a][l] * Mg[gp][0] + b.dNy[gp][a][l] * Mg[gp][2]);
+          Fy[a] += A3 * (b.dNy[gp][a][l] * Mg[gp][1] + b.dNx[gp][a][l] * Mg[gp][2]);
+        }
+      double Fw[3] = {0, 0, 0};
+      for (int k = 0; k < 3; ++k) {
+        const int i = kSide[k][0], j = kSide[k][1];
+        const double c = b.sc[k][l], s = b.ss[k][l], len = b.sl[k][l];
+        const double Fs = c * Fx[3 + k] + s * Fy[3 + k];
+        const double Fn = -s * Fx[3 + k] + c * Fy[3 + k];
+        Fw[j] -= 1.5 / len * Fs;
+        Fw[i] += 1.5 / len * Fs;
+        const double gx = -0.25 * c * Fs - 0.5 * s * Fn;  // d/d beta_x(i) and (j)
+        const double gy = -0.25 * s * Fs + 0.5 * c * Fn;
+        Fx[i] += gx; Fx[j] += gx;
+        Fy[i] += gy; Fy[j] += gy;
+      }
+      for (int i = 0; i < 3; ++i) {
+        b.Fx[i][l] = Fx[i];
+        b.Fy[i][l] = Fy[i];
+        b.Fw[i][l] = Fw[i];
+      }
     }
-    const double Nxx = tr.N[0], Nyy = tr.N[1], Nxy = tr.N[2];
-    for (int i = 0; i < 3; ++i) {
-      const double fx = A * (B1[i] * Nxx + B2[i] * Nxy);
-      const double fy = A * (B2[i] * Nyy + B1[i] * Nxy);
-      const double fz = Fw[i];
-      const double mx = -Fy[i];  // beta_y = -th_x
-      const double my = Fx[i];   // beta_x = th_y
-      const std::size_t s = s0 + static_cast<std::size_t>(i);
-      out.fx[s] = -(fx * ex[0] + fy * ey[0] + fz * ez[0]);
-      out.fy[s] = -(fx * ex[1] + fy * ey[1] + fz * ez[1]);
-      out.fz[s] = -(fx * ex[2] + fy * ey[2] + fz * ez[2]);
-      out.mx[s] = -(mx * ex[0] + my * ey[0]);
-      out.my[s] = -(mx * ex[1] + my * ey[1]);
-      out.mz[s] = -(mx * ex[2] + my * ey[2]);
+    // Nodal force and moment ON the nodes (minus the internal ones), global frame.
+    for (std::size_t l = 0; l < n; ++l)
+#pragma GCC unroll 3
+      for (int i = 0; i < 3; ++i) {
+        const double A = b.A[l];
+        const double fx = A * (b.B1[i][l] * b.th.N[0][l] + b.B2[i][l] * b.th.N[2][l]);
+        const double fy = A * (b.B2[i][l] * b.th.N[1][l] + b.B1[i][l] * b.th.N[2][l]);
+        const double fz = b.Fw[i][l];
+        const double mx = -b.Fy[i][l];  // beta_y = -th_x
+        const double my = b.Fx[i][l];   // beta_x = th_y
+        const double exx = b.ex[0][l], exy = b.ex[1][l], exz = b.ex[2][l];
+        const double eyx = b.ey[0][l], eyy = b.ey[1][l], eyz = b.ey[2][l];
+        const double ezx = b.ez[0][l], ezy = b.ez[1][l], ezz = b.ez[2][l];
+        const bool ok = b.ok[l] != 0.0;
+        b.f[0][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exx + fy * eyx + fz * ezx) : 0.0;
+        b.f[1][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exy + fy * eyy + fz * ezy) : 0.0;
+        b.f[2][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exz + fy * eyz + fz * ezz) : 0.0;
+        b.f[3][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exx + my * eyx) : 0.0;
+        b.f[4][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exy + my * eyy) : 0.0;
+        b.f[5][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exz + my * eyz) : 0.0;
+      }
+    // Stable step 2A / longest side / c on the mid-step geometry.
+    for (std::size_t l = 0; l < n; ++l) {
+      double lmax2 = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const double dx = b.X[j][l] - b.X[i][l], dy = b.Y[j][l] - b.Y[i][l], dz = b.Z[j][l] - b.Z[i][l];
+        const double l2 = ((0.0 + dx * dx) + dy * dy) + dz * dz;
+        lmax2 = std::max(lmax2, l2);
+      }
+      b.lmax2[l] = lmax2 > 0.0 ? lmax2 : 1.0;
     }
-    const double dE = A * tr.dE + A3 * dEdev;
-    g.eint[e] += dE;
-    tot.de_int += dE;
-    if (sec.thickness_change) g.thick[e] = t * (1.0 + tr.dezz);
-    g.area[e] = A;
-    double lmax2 = 0;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      double l2 = 0;
-      for (int k = 0; k < 3; ++k) l2 += (X[j][k] - X[i][k]) * (X[j][k] - X[i][k]);
-      lmax2 = std::max(lmax2, l2);
+    for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
+    for (std::size_t l = 0; l < n; ++l) b.dte[l] = 2.0 * b.A[l] / b.lmax2[l] / cwave;
+    // Scatter the slots (a copy when the batch's elements are consecutive) and write the
+    // state back (masked lanes: zero slots; deleted elements no step; degenerate ones
+    // keep their state).
+    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
+    if (static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1) {
+      const std::size_t s0 = static_cast<std::size_t>(idx[0]) * 3;
+      for (int c = 0; c < 6; ++c) std::copy_n(b.f[c], 3 * n, slot_out[c] + s0);
+    } else {
+      for (std::size_t l = 0; l < n; ++l)
+        for (int c = 0; c < 6; ++c)
+          std::copy_n(b.f[c] + 3 * l, 3, slot_out[c] + static_cast<std::size_t>(idx[l]) * 3);
     }
-    g.dt_elem[e] = 2.0 * A / std::sqrt(lmax2) / cwave;
-    if (g.dt_elem[e] < tot.dt_min) {
-      tot.dt_min = g.dt_elem[e];
-      tot.dt_element = static_cast<std::int64_t>(e);
-    }
-    if (nf >= sec.points_to_delete()) {
-      g.deleted[e] = 1;
-      ++tot.newly_deleted;
+    for (std::size_t l = 0; l < n; ++l) {
+      const auto e = static_cast<std::size_t>(idx[l]);
+      if (g.deleted[e]) {
+        g.dt_elem[e] = 1e300;
+        continue;
+      }
+      if (b.ok[l] == 0.0) continue;
+      double* m9 = &g.extra[e * 9];
+      for (int c = 0; c < 9; ++c) m9[c] = b.md[c][l];
+      const int nf = static_cast<int>(b.th.nfail[l]);
+      g.n_failed[e] = static_cast<std::uint8_t>(nf);
+      const double dE = b.A[l] * b.th.dE[l] + b.A[l] / 3.0 * b.dEdev[l];
+      g.eint[e] += dE;
+      tot.de_int += dE;
+      if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
+      g.area[e] = b.A[l];
+      g.dt_elem[e] = b.dte[l];
+      if (b.dte[l] < tot.dt_min) {
+        tot.dt_min = b.dte[l];
+        tot.dt_element = static_cast<std::int64_t>(e);
+      }
+      if (nf >= sec.points_to_delete()) {
+        g.deleted[e] = 1;
+        ++tot.newly_deleted;
+      }
     }
   }
   return tot;

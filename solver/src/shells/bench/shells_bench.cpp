@@ -4,7 +4,8 @@
 // unless OMP_NUM_THREADS says otherwise; thread CPU time (meaningful with one thread). Cases: 3-node CST+DKT and 4-node Belytschko-Tsay,
 // 3 Gauss points through the thickness, LAW1 elastic and LAW2 elastoplastic with every
 // point yielding every cycle (steady stretching plus bending: the worst case).
-// Usage: hbm-shells-bench [n_elements (default 100000)] [cycles (default 200)]
+// Usage: hbm-shells-bench [n_elements (default 100000)] [cycles (default 200)] [case]
+// case (optional): quad or tria, then elastic or plastic, e.g. "quad-elastic": that case only.
 #include "shells/shell_element_group.hpp"
 
 #include <omp.h>
@@ -104,8 +105,11 @@ int main(int argc, char** argv) {
   std::printf("hbm-shells-bench: %zu elements, %d cycles, %d thread(s), 3 points through the thickness\n",
               n, cycles, omp_get_max_threads());
   std::printf("%-44s %14s\n", "case", "ns/elem-cycle");
+  const std::string only = argc > 3 ? argv[3] : "";
   for (const bool tria : {true, false})
     for (const bool plastic : {false, true}) {
+      const std::string name = std::string(tria ? "tria" : "quad") + (plastic ? "-plastic" : "-elastic");
+      if (!only.empty() && name.find(only) == std::string::npos) continue;
       const double ns = run_case(tria, plastic, n, cycles);
       std::printf("%-44s %14.1f\n",
                   (std::string(tria ? "SH3N CST+DKT" : "SHELL Belytschko-Tsay") +
