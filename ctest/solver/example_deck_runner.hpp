@@ -6,6 +6,8 @@
 //    ./out_<name><tag><per-process suffix>/, its console in the same name + .log (any test area);
 //  - run_in_process: hbm::solver::run_deck in the test process, keeping the frozen model
 //    for inspection (tests linked with the whole engine: run_* and shelldecks_*).
+//  - run_solver / run_modified_deck: hbm-solver on a deck whose run is expected to fail
+//    (deck errors): exit code and console text, for the message checks.
 // Used by the deck verifications of the engine, shells, springs, rigid bodies and contact.
 #pragma once
 
@@ -22,6 +24,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <sys/wait.h>
 
 namespace hbm::solver::testing {
 
@@ -107,6 +110,40 @@ inline std::filesystem::path run_deck(const std::string& name, const std::string
   EXPECT_EQ(rc, 0) << cmd << " (see " << out.string() << ".log)";
   return rc == 0 ? out : std::filesystem::path{};
 #endif
+}
+
+// hbm-solver on `starter` with its outputs in <starter folder>/out; returns the exit code
+// and sets `output` to the console text (both streams).
+inline int run_solver(const std::filesystem::path& starter, std::string& output) {
+#ifndef HBM_SOLVER_EXE
+  ADD_FAILURE() << "hbm-solver was not built";
+  return -1;
+#else
+  const std::filesystem::path dir = starter.parent_path(), log = dir / "log.txt";
+  const std::string cmd = std::string("'") + HBM_SOLVER_EXE + "' '" + starter.string() + "' --out '" +
+                          (dir / "out").string() + "' > '" + log.string() + "' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  output = read_text(log);
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+#endif
+}
+
+// Copies decks/examples/<name>/ into ./bad_<tag><per-process suffix>/ with the first `from`
+// replaced by `to` in the starter deck (the engine deck as it is) and runs hbm-solver on it:
+// exit code and console text, as run_solver.
+inline int run_modified_deck(const std::string& name, const std::string& tag, const std::string& from,
+                             const std::string& to, std::string& output) {
+  const std::filesystem::path src = example_deck(name).parent_path();
+  const std::filesystem::path dir = std::filesystem::current_path() / ("bad_" + tag + per_process_suffix());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::string starter = read_text(src / (name + "_0000.rad"));
+  const auto pos = starter.find(from);
+  EXPECT_NE(pos, std::string::npos) << "pattern not in deck: " << from;
+  if (pos != std::string::npos) starter.replace(pos, from.size(), to);
+  std::ofstream(dir / (name + "_0000.rad")) << starter;
+  std::filesystem::copy_file(src / (name + "_0001.rad"), dir / (name + "_0001.rad"));
+  return run_solver(dir / (name + "_0000.rad"), output);
 }
 
 // A run in the test process: the model as it was at the end, the result, the output folder.

@@ -9,7 +9,6 @@
 //    keyword and the field, exit code 1.
 #include "example_deck_runner.hpp"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,17 +42,7 @@ fs::path deck_with(const std::string& tag, const std::string& cst) {
 }
 
 int run_solver(const fs::path& starter, std::string& output) {
-#ifdef HBM_SOLVER_EXE
-  const fs::path log = starter.parent_path() / "log.txt";
-  const std::string cmd = std::string("'") + HBM_SOLVER_EXE + "' '" + starter.string() + "' --out '" +
-                          (starter.parent_path() / "out").string() + "' > '" + log.string() + "' 2>&1";
-  const int rc = std::system(cmd.c_str());
-  output = hbm::solver::testing::read_text(log);
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-#else
-  ADD_FAILURE() << "hbm-solver was not built";
-  return -1;
-#endif
+  return hbm::solver::testing::run_solver(starter, output);
 }
 
 }  // namespace

@@ -6,45 +6,13 @@
 // verification deck springs_mass_period / rigid_tumbling with one field changed.
 #include "example_deck_runner.hpp"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Copy a verification deck with `from` replaced by `to` in the starter, run it, return the
-// exit code and the solver's output.
 int run_modified(const std::string& name, const std::string& tag, const std::string& from,
                  const std::string& to, std::string& output) {
-  const std::filesystem::path src = std::filesystem::path(HBM_SOURCE_DIR) / "decks/examples" / name;
-  const std::filesystem::path dir = std::filesystem::current_path() / ("bad_" + tag);
-  std::filesystem::create_directories(dir);
-  std::string starter = slurp(src / (name + "_0000.rad"));
-  const auto pos = starter.find(from);
-  EXPECT_NE(pos, std::string::npos) << "pattern not in deck: " << from;
-  if (pos != std::string::npos) starter.replace(pos, from.size(), to);
-  std::ofstream(dir / (name + "_0000.rad")) << starter;
-  std::filesystem::copy_file(src / (name + "_0001.rad"), dir / (name + "_0001.rad"),
-                             std::filesystem::copy_options::overwrite_existing);
-#ifdef HBM_SOLVER_EXE
-  const std::string log = (dir / "log.txt").string();
-  const std::string cmd = std::string(HBM_SOLVER_EXE) + " " + (dir / (name + "_0000.rad")).string() +
-                          " --out " + (dir / "out").string() + " > " + log + " 2>&1";
-  const int rc = std::system(cmd.c_str());
-  output = slurp(log);
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-#else
-  ADD_FAILURE() << "hbm-solver was not built";
-  return -1;
-#endif
+  return hbm::solver::testing::run_modified_deck(name, tag, from, to, output);
 }
 
 const std::string kDofLine = "         0         0         0         0         0";
