@@ -237,8 +237,8 @@ void membrane_patch(bool tria) {
   const double tr_exact = sxx + syy;
   const double vm_exact = std::sqrt(sxx * sxx - sxx * syy + syy * syy + 3 * sxy * sxy);
   for (std::size_t e = 0; e < h.g.n; ++e) {
-    const double* s = &h.g.stress[e * 9];
-    EXPECT_NEAR(s[0] + s[1], tr_exact, 1e-10 * vm_exact) << "element " << e;
+    EXPECT_NEAR(h.g.point_stress(e, 0, 0) + h.g.point_stress(e, 0, 1), tr_exact, 1e-10 * vm_exact)
+        << "element " << e;
     EXPECT_NEAR(h.g.von_mises(e), vm_exact, 1e-10 * vm_exact) << "element " << e;
   }
   double fscale = 0;
@@ -283,11 +283,11 @@ void bending_patch(bool tria) {
     double M[3] = {0, 0, 0};
     for (int p = 0; p < 3; ++p)
       for (int c = 0; c < 3; ++c)
-        M[c] += 0.25 * t * t * h.g.sec.weight[p] * h.g.sec.zeta[p] * h.g.stress[e * 9 + 3 * p + c];
+        M[c] += 0.25 * t * t * h.g.sec.weight[p] * h.g.sec.zeta[p] * h.g.point_stress(e, p, c);
     EXPECT_NEAR(M[0] + M[1], mtr, 1e-6 * std::abs(mtr)) << "element " << e;
     // Membrane stays zero (mid-plane strain only O(dt^2)).
     double N0 = 0;
-    for (int p = 0; p < 3; ++p) N0 += h.g.sec.weight[p] * h.g.stress[e * 9 + 3 * p];
+    for (int p = 0; p < 3; ++p) N0 += h.g.sec.weight[p] * h.g.point_stress(e, p, 0);
     EXPECT_NEAR(N0, 0.0, 1e-6 * std::abs(mxx) / t);
   }
   for (std::size_t n = 0; n < h.nn; ++n) {

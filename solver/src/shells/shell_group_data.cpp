@@ -27,8 +27,8 @@ double ShellGroupData::von_mises(std::size_t e) const {
   const int np = sec.n_points;
   double sum = 0;
   for (int p = 0; p < np; ++p) {
-    const double* s = &stress[(e * np + p) * 3];
-    sum += std::sqrt(std::max(0.0, s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2]));
+    const double s0 = point_stress(e, p, 0), s1 = point_stress(e, p, 1), s2 = point_stress(e, p, 2);
+    sum += std::sqrt(std::max(0.0, s0 * s0 - s0 * s1 + s1 * s1 + 3.0 * s2 * s2));
   }
   return sum / np;
 }

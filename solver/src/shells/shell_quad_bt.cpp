@@ -35,6 +35,7 @@
 // results do not depend on the batch nor on the thread count. Square roots sit in loops
 // of their own (without -fno-math-errno a sqrt call keeps a loop scalar).
 #include "shells/shell_group_data.hpp"
+#include "shells/shell_lane_gather.hpp"
 #include "shells/shell_thickness_lanes.hpp"
 
 #include <algorithm>
@@ -83,6 +84,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
   for (std::size_t k0 = 0; k0 < elements.size(); k0 += W) {
     const std::size_t n = std::min(W, elements.size() - k0);
     const std::int32_t* idx = elements.data() + k0;
+    const bool consecutive = static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1;
     // Gather: mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2} (the velocity gradient
     // of a rigid rotation is then skew, so rotations strain nothing), v, omega, state.
     for (std::size_t l = 0; l < n; ++l) {
@@ -94,19 +96,8 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
       for (int c = 0; c < 7; ++c) b.q[c][l] = ex7[c];
     }
     // One nodal field pair at a time (few live pointers: no register spills).
-    const auto gather = [&](const double* __restrict a, double (*lane)[W]) {
-      for (int i = 0; i < 4; ++i)
-        for (std::size_t l = 0; l < n; ++l) lane[i][l] = a[b.node[i][l]];
-    };
-    gather(nv.vx, b.VX); gather(nv.vy, b.VY); gather(nv.vz, b.VZ);
-    gather(nv.wx, b.WX); gather(nv.wy, b.WY); gather(nv.wz, b.WZ);
-    gather(nv.x, b.X); gather(nv.y, b.Y); gather(nv.z, b.Z);
-    for (int i = 0; i < 4; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        b.X[i][l] -= hdt * b.VX[i][l];
-        b.Y[i][l] -= hdt * b.VY[i][l];
-        b.Z[i][l] -= hdt * b.VZ[i][l];
-      }
+    gather_positions<4>(b, n, nv, hdt);
+    gather_spins<4>(b, n, nv);
     // Local frame: e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1.
     for (std::size_t l = 0; l < n; ++l) {
       const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
@@ -244,6 +235,15 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     // Internal (resisting) nodal forces in the local frame; the force and moment ON the
     // node (minus the internal ones) in the global frame.
+    // Written straight into the slot buffers when the batch's elements are consecutive,
+    // else into the lanes and copied per element below.
+    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
+    double* dst[6];
+    for (int c = 0; c < 6; ++c)
+      dst[c] = consecutive ? slot_out[c] + static_cast<std::size_t>(idx[0]) * 4 : b.f[c];
+    double *const f0 = dst[0], *const f1 = dst[1], *const f2 = dst[2], *const f3 = dst[3], *const f4 = dst[4],
+                  *const f5 = dst[5];
+#pragma GCC ivdep
     for (std::size_t l = 0; l < n; ++l)
 #pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
@@ -265,12 +265,12 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
         const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
         const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
         const bool ok = b.ok[l] != 0.0;
-        b.f[0][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1x + fy * e2x + fz * e3x) : 0.0;
-        b.f[1][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1y + fy * e2y + fz * e3y) : 0.0;
-        b.f[2][4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1z + fy * e2z + fz * e3z) : 0.0;
-        b.f[3][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1x + my * e2x) : 0.0;
-        b.f[4][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1y + my * e2y) : 0.0;
-        b.f[5][4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1z + my * e2z) : 0.0;
+        f0[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1x + fy * e2x + fz * e3x) : 0.0;
+        f1[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1y + fy * e2y + fz * e3y) : 0.0;
+        f2[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1z + fy * e2z + fz * e3z) : 0.0;
+        f3[4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1x + my * e2x) : 0.0;
+        f4[4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1y + my * e2y) : 0.0;
+        f5[4 * l + static_cast<std::size_t>(i)] = ok ? -(mx * e1z + my * e2z) : 0.0;
       }
     // Stable step A / longest side / c on the mid-step geometry.
     for (std::size_t l = 0; l < n; ++l) {
@@ -285,18 +285,13 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
-    // Scatter the slots (a copy when the batch's elements are consecutive) and write the
-    // state back (masked lanes: zero slots; deleted elements no step; folded ones keep
-    // their state).
-    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
-    if (static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1) {
-      const std::size_t s0 = static_cast<std::size_t>(idx[0]) * 4;
-      for (int c = 0; c < 6; ++c) std::copy_n(b.f[c], 4 * n, slot_out[c] + s0);
-    } else {
+    // Slots of a batch with gaps (elements inside a rigid body left out), then the state
+    // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
+    // state).
+    if (!consecutive)
       for (std::size_t l = 0; l < n; ++l)
         for (int c = 0; c < 6; ++c)
           std::copy_n(b.f[c] + 4 * l, 4, slot_out[c] + static_cast<std::size_t>(idx[l]) * 4);
-    }
     for (std::size_t l = 0; l < n; ++l) {
       const auto e = static_cast<std::size_t>(idx[l]);
       if (g.deleted[e]) {

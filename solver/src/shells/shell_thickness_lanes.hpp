@@ -58,12 +58,12 @@ struct ThicknessLanes {
       for (std::size_t p = 0; p < np; ++p)
         for (int c = 0; c < 3; ++c) sig[p][c][l] = sp[3 * p + static_cast<std::size_t>(c)];
     }
-    for (int c = 0; c < 3; ++c) {
-      std::fill_n(N[c], n, 0.0);
-      std::fill_n(M[c], n, 0.0);
+    for (int c = 0; c < 3; ++c) {  // whole rows: stores inlined, no memset call
+      std::fill_n(N[c], W, 0.0);
+      std::fill_n(M[c], W, 0.0);
     }
-    std::fill_n(dE, n, 0.0);
-    std::fill_n(dezz, n, 0.0);
+    std::fill_n(dE, W, 0.0);
+    std::fill_n(dezz, W, 0.0);
     for (std::size_t p = 0; p < np; ++p) {
       const double zeta = sec.zeta[p], wp = sec.weight[p];
       // Local restrict pointers: the loop then vectorises (through the thread_local

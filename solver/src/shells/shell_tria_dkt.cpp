@@ -28,6 +28,7 @@
 // that GCC vectorises; deleted or degenerate elements are masked on output; each lane
 // does the arithmetic of the one-element formulas in the same order.
 #include "shells/shell_group_data.hpp"
+#include "shells/shell_lane_gather.hpp"
 #include "shells/shell_thickness_lanes.hpp"
 
 #include <algorithm>
@@ -100,6 +101,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
   for (std::size_t k0 = 0; k0 < elements.size(); k0 += W) {
     const std::size_t n = std::min(W, elements.size() - k0);
     const std::int32_t* idx = elements.data() + k0;
+    const bool consecutive = static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1;
     // Gather: mid-step geometry x^{n-1/2} = x^n - dt/2 v^{n-1/2} (the velocity gradient
     // of a rigid rotation is then skew, so rotations strain nothing), v, omega, state.
     for (std::size_t l = 0; l < n; ++l) {
@@ -110,19 +112,8 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       const double* m9 = &g.extra[e * 9];
       for (int c = 0; c < 9; ++c) b.md[c][l] = m9[c];
     }
-    const auto gather = [&](const double* __restrict a, double (*lane)[W]) {
-      for (int i = 0; i < 3; ++i)
-        for (std::size_t l = 0; l < n; ++l) lane[i][l] = a[b.node[i][l]];
-    };
-    gather(nv.vx, b.VX); gather(nv.vy, b.VY); gather(nv.vz, b.VZ);
-    gather(nv.wx, b.WX); gather(nv.wy, b.WY); gather(nv.wz, b.WZ);
-    gather(nv.x, b.X); gather(nv.y, b.Y); gather(nv.z, b.Z);
-    for (int i = 0; i < 3; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        b.X[i][l] -= hdt * b.VX[i][l];
-        b.Y[i][l] -= hdt * b.VY[i][l];
-        b.Z[i][l] -= hdt * b.VZ[i][l];
-      }
+    gather_positions<3>(b, n, nv, hdt);
+    gather_spins<3>(b, n, nv);
     // Local frame: e1 along node 1 -> 2, e3 = r21 x r31 / |.|, e2 = e3 x e1; area.
     for (std::size_t l = 0; l < n; ++l) {
       const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
@@ -220,9 +211,9 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
     for (std::size_t l = 0; l < n; ++l) b.i2A[l] = 0.5 / b.A[l];
     for (int gp = 0; gp < 3; ++gp) {
       double *__restrict q0 = b.kap[gp][0], *__restrict q1 = b.kap[gp][1], *__restrict q2 = b.kap[gp][2];
-      std::fill_n(q0, n, 0.0);
-      std::fill_n(q1, n, 0.0);
-      std::fill_n(q2, n, 0.0);
+      std::fill_n(q0, W, 0.0);  // whole rows: stores inlined, no memset call
+      std::fill_n(q1, W, 0.0);
+      std::fill_n(q2, W, 0.0);
       for (int a = 0; a < 6; ++a) {
         const double dxi = kQD.dxi[gp][a], deta = kQD.deta[gp][a];
         const double *__restrict i2A = b.i2A, *__restrict x21 = b.l21, *__restrict x31 = b.x2, *__restrict y31 = b.y2;
@@ -300,6 +291,15 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
     }
     // Nodal force and moment ON the nodes (minus the internal ones), global frame.
+    // Written straight into the slot buffers when the batch's elements are consecutive,
+    // else into the lanes and copied per element below.
+    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
+    double* dst[6];
+    for (int c = 0; c < 6; ++c)
+      dst[c] = consecutive ? slot_out[c] + static_cast<std::size_t>(idx[0]) * 3 : b.f[c];
+    double *const f0 = dst[0], *const f1 = dst[1], *const f2 = dst[2], *const f3 = dst[3], *const f4 = dst[4],
+                  *const f5 = dst[5];
+#pragma GCC ivdep
     for (std::size_t l = 0; l < n; ++l)
 #pragma GCC unroll 3
       for (int i = 0; i < 3; ++i) {
@@ -313,12 +313,12 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         const double eyx = b.ey[0][l], eyy = b.ey[1][l], eyz = b.ey[2][l];
         const double ezx = b.ez[0][l], ezy = b.ez[1][l], ezz = b.ez[2][l];
         const bool ok = b.ok[l] != 0.0;
-        b.f[0][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exx + fy * eyx + fz * ezx) : 0.0;
-        b.f[1][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exy + fy * eyy + fz * ezy) : 0.0;
-        b.f[2][3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exz + fy * eyz + fz * ezz) : 0.0;
-        b.f[3][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exx + my * eyx) : 0.0;
-        b.f[4][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exy + my * eyy) : 0.0;
-        b.f[5][3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exz + my * eyz) : 0.0;
+        f0[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exx + fy * eyx + fz * ezx) : 0.0;
+        f1[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exy + fy * eyy + fz * ezy) : 0.0;
+        f2[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exz + fy * eyz + fz * ezz) : 0.0;
+        f3[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exx + my * eyx) : 0.0;
+        f4[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exy + my * eyy) : 0.0;
+        f5[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exz + my * eyz) : 0.0;
       }
     // Stable step 2A / longest side / c on the mid-step geometry.
     for (std::size_t l = 0; l < n; ++l) {
@@ -333,18 +333,13 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = 2.0 * b.A[l] / b.lmax2[l] / cwave;
-    // Scatter the slots (a copy when the batch's elements are consecutive) and write the
-    // state back (masked lanes: zero slots; deleted elements no step; degenerate ones
-    // keep their state).
-    double* const slot_out[6] = {out.fx, out.fy, out.fz, out.mx, out.my, out.mz};
-    if (static_cast<std::size_t>(idx[n - 1] - idx[0]) == n - 1) {
-      const std::size_t s0 = static_cast<std::size_t>(idx[0]) * 3;
-      for (int c = 0; c < 6; ++c) std::copy_n(b.f[c], 3 * n, slot_out[c] + s0);
-    } else {
+    // Slots of a batch with gaps (elements inside a rigid body left out), then the state
+    // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
+    // state).
+    if (!consecutive)
       for (std::size_t l = 0; l < n; ++l)
         for (int c = 0; c < 6; ++c)
           std::copy_n(b.f[c] + 3 * l, 3, slot_out[c] + static_cast<std::size_t>(idx[l]) * 3);
-    }
     for (std::size_t l = 0; l < n; ++l) {
       const auto e = static_cast<std::size_t>(idx[l]);
       if (g.deleted[e]) {
