@@ -378,6 +378,23 @@ TEST(Deck, SameInputGivesIdenticalTextAndTheDeckReadsBack) {
   std::ostringstream diag;
   hbm::deck::print_diagnostics(diag, r);
   EXPECT_TRUE(r.ok()) << diag.str();
+  // The drop deck's /TH/PART asks IE, HE and AM of every part of the model, each once: the
+  // hourglass / internal energy ratio of a run and where it sits are read from it.
+  const auto th = r.deck.cards_of("/TH/PART");
+  ASSERT_EQ(th.size(), 1u);
+  const hbm::deck::Card& c = *th[0];
+  ASSERT_EQ(c.n_name_rows(), 1u);
+  std::vector<std::string> vars;
+  for (const char* f : {"var1", "var2", "var3"}) vars.push_back(r.deck.texts[c.value(c.name_row(0), f).text]);
+  EXPECT_EQ(vars, (std::vector<std::string>{"IE", "HE", "AM"}));
+  std::multiset<std::int64_t> listed, parts;
+  for (std::size_t i = 0; i < c.n_rows(); ++i)
+    for (int k = 1; k <= 10; ++k) {
+      const std::string f = "id" + std::to_string(k);
+      if (!c.blank(c.row(i), f)) listed.insert(c.integer(c.row(i), f));
+    }
+  for (const auto& p : model().m.parts) parts.insert(p.id);
+  EXPECT_EQ(listed, parts);
 }
 
 TEST(Surface, TorsoBoundaryIsClosedAndVolumeMatches) {

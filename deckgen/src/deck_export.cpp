@@ -266,6 +266,20 @@ void write_drop_decks(const std::filesystem::path& dir, const std::string& name,
       .set(2, "XM", 0).set(2, "YM", 0).set(2, "ZM", zf)
       .set(3, "XM1", 0).set(3, "YM1", 0).set(3, "ZM1", zf + 100.0)
       .commit();
+  {
+    // Internal and hourglass energy and added mass of every part (as the hub decks have): the
+    // hourglass / internal energy ratio of a run of this deck, and where it sits, read from T01.
+    CardBuilder th(rest, "/TH/PART", 90001, "parts");
+    static const char* vars[3][2] = {{"var1", "IE"}, {"var2", "HE"}, {"var3", "AM"}};
+    const std::size_t nr = th.add_name_row();
+    for (const auto& v : vars) th.name_row_set_text(nr, v[0], v[1]);
+    static const char* ids[10] = {"id1", "id2", "id3", "id4", "id5", "id6", "id7", "id8", "id9", "id10"};
+    for (std::size_t i = 0; i < m.parts.size(); i += 10) {
+      const std::size_t r = th.add_row();
+      for (std::size_t k = 0; k < 10 && i + k < m.parts.size(); ++k) th.row_set_int(r, ids[k], m.parts[i + k].id);
+    }
+    th.commit();
+  }
   CardBuilder(rest, "/END").commit();
   std::ostringstream os;
   os << "#RADIOSS STARTER\n";
