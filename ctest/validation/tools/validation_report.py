@@ -310,9 +310,11 @@ def main():
     L.append("")
     L.append("- Decks: `hbm-loadcase --case all` (sources `deckgen/loadcases/`); each `decks/<case>/<case>_0000.rad` "
              "includes `decks/hbm50/hbm50.inc` and says in its header what it does. Impactor: rigid body of shells "
-             "(face + 20 mm rim) with 23.4 kg in all, rotations fixed, initial velocity by /INIVEL/TRA, placed 3 mm "
-             "from the skin; contact /INTER/TYPE7 skin nodes on the impactor face, gap 1 mm, friction 0.2, critical "
-             "contact damping. Subject free in space (seated without back support, no gravity over the 60 ms). "
+             "with the shape of the 49 CFR 572.36(a) thorax probe (flat face, 12.7 mm edge radius, 20 mm of "
+             "cylinder; face diameter = cylinder diameter), 23.4 kg in all, rotations fixed, initial velocity by "
+             "/INIVEL/TRA, its surface placed 3 mm from the nearest contact node; contact /INTER/TYPE7: nodes of the "
+             "struck skin and of the limbs in the path (left arm in the oblique cases, thighs in the pelvis case) on "
+             "the impactor, gap 1 mm, friction 0.2, critical contact damping. Subject free in space (seated without back support, no gravity over the 60 ms). "
              "/DT/NODA/CST 0.9 1.5E-3, /STOP DMmax 0.01, time histories every 0.01 ms.")
     L.append("- Frontal (Lebarbe & Petit 2012): 152 mm face at mid-sternum height on the mid-plane, travelling -X; "
              "force = 23.4 kg x impactor deceleration (CFC 180), deflection = impactor displacement relative to the "
@@ -320,11 +322,11 @@ def main():
     L.append("- Oblique thorax (Viano 1989): 150 mm face, 30 deg forward of lateral from the left, axis through the "
              "torso centre at the lower end of the sternum (xiphoid); channels projected on the impact axis "
              "(`ctest/validation/cases/viano1989_thorax_oblique_*_model_frame.toml`, because the model cannot be "
-             "turned onto the global Y axis). The impactor contacts the skin only: the seated model's left arm "
-             "hangs beside the chest in the impactor's path (notes above) and is passed through, so the pendulum "
-             "loads the chest wall directly as in a test with the arm clear of the path; the arm cannot be raised "
-             "without re-posturing the model (`geometry/`), and the arm position of Viano's subjects is to be "
-             "checked in SAE 892432 (see `geometry/calibration-notes-validation.md`).")
+             "turned onto the global Y axis). The driver posture holds the left forearm in the "
+             "path (146 mm ahead of the skin): the oblique decks include a posed model with the left arm raised "
+             "(`decks/hub_posed_arm_l_raised`, `hbm-deckgen --joint shoulder_l=-60`), the arm still in the impactor "
+             "contact; the arm position of Viano's subjects is not verified (SAE 892432 not available, see "
+             "`geometry/calibration-notes-validation.md`).")
     L.append("- Lateral pelvis (Viano 1989): 150 mm face on the left greater trochanter landmark, travelling -Y "
              "(`corridors/cases/viano1989_pelvis_lateral_5p2.toml`).")
     L.append("- No material was tuned per case; calibration notes go to `geometry/calibration-notes-validation.md`.")
