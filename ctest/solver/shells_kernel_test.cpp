@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 using namespace hbm::solver::shells;
@@ -244,10 +245,22 @@ void membrane_patch(bool tria) {
   double fscale = 0;
   for (std::size_t n = 0; n < h.nn; ++n) fscale = std::max(fscale, std::abs(h.f[n][0]) + std::abs(h.f[n][1]));
   ASSERT_GT(fscale, 0);
+  // The forces act at x^n (triangle: at the mid-step geometry). The quad keeps its
+  // stress in the frame of edge 1-2 (Belytschko-Tsay), which turns over the half step
+  // x^{n-1/2} -> x^n by an angle of each element's own, up to dt/2 |L| = 1e-3 here:
+  // the uniform stress is then uniform only to that angle, and so is the balance of
+  // the interior nodes (exact for the triangle).
+  const double Lmax = 2e-3;
+  const double tol = tria ? 1e-10 : 0.5 * dt * Lmax;
+  double worst = 0;
   for (std::size_t n = 0; n < h.nn; ++n) {
     if (!interior(h, n)) continue;
-    for (int c2 = 0; c2 < 6; ++c2) EXPECT_NEAR(h.f[n][c2], 0.0, 1e-10 * fscale) << "node " << n;
+    for (int c2 = 0; c2 < 6; ++c2) {
+      EXPECT_NEAR(h.f[n][c2], 0.0, tol * fscale) << "node " << n;
+      worst = std::max(worst, std::abs(h.f[n][c2]) / fscale);
+    }
   }
+  std::printf("membrane patch %s: worst interior imbalance %.3e of the largest force\n", tria ? "tria" : "quad", worst);
 }
 
 // Constant-curvature Kirchhoff field as rates: beta_x = kx x + k12 y / 2,

@@ -6,7 +6,10 @@
 //   2d_xy = B2I vxI + B1I vyI + z (B2I thyI - B1I thxI),
 //   2d_xz = B1I vzI + thyI/4,      2d_yz = B2I vzI - thxI/4,
 // B1 = (y24, y31, y42, y13)/(2A), B2 = (x42, x13, x24, x31)/(2A) in the local frame
-// e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1.
+// e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1. Rates on the mid-step
+// geometry x^{n-1/2} (rigid rotations strain nothing), forces on the current geometry
+// x^n (frame, B, gamma, warping again there): the work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt
+// then equals the energy increment to second order (docs/engine-design.md, shells).
 //
 // Warped elements (Belytschko, Wong & Chiang 1989, "Improvements in low-order shell
 // elements for explicit transient analysis", CMAME 73: 223-239): each node sits at a
@@ -57,13 +60,72 @@ struct QuadLanes {
   alignas(64) double vx[4][W], vy[4][W], vz[4][W], tx[4][W], ty[4][W];  // local rates
   alignas(64) double B1[4][W], B2[4][W], gam[4][W];
   alignas(64) double gxz[W], gyz[W];
-  alignas(64) double A[W], ok[W], alive[W], sq[W], lmax2[W];
+  alignas(64) double A[W], ok[W], okf[W], alive[W], sq[W], lmax2[W];
   ThicknessLanes<W> th;                                // strain increments in, resultants out
   alignas(64) double q[7][W];                          // extra: Qx Qy, 5 hourglass forces
   alignas(64) double dEhg[W], dte[W];
   alignas(64) double f[6][W * 4];                      // force, moment ON the nodes, global,
                                                        // slot order (lane * 4 + node)
 };
+
+}  // namespace
+
+namespace {
+
+// Local frame e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1, local
+// coordinates about the centre (x, y, warping height zw) and area A of the points X Y Z.
+void local_geometry(QuadLanes& b, std::size_t n) {
+    for (std::size_t l = 0; l < n; ++l) {
+      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+      const double r42x = b.X[3][l] - b.X[1][l], r42y = b.Y[3][l] - b.Y[1][l], r42z = b.Z[3][l] - b.Z[1][l];
+      const double cx = r31y * r42z - r31z * r42y, cy = r31z * r42x - r31x * r42z, cz3 = r31x * r42y - r31y * r42x;
+      b.e3[0][l] = cx; b.e3[1][l] = cy; b.e3[2][l] = cz3;
+      const double s = cx * cx + cy * cy + cz3 * cz3;
+      b.sq[l] = s > 0.0 ? s : 1.0;  // folded to a line: finite stand-in (masked)
+    }
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const double n3 = b.sq[l];
+      const double e3x = b.e3[0][l] * n3, e3y = b.e3[1][l] * n3, e3z = b.e3[2][l] * n3;
+      b.e3[0][l] = e3x; b.e3[1][l] = e3y; b.e3[2][l] = e3z;
+      const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
+      const double d21 = r21x * e3x + r21y * e3y + r21z * e3z;
+      const double ax = r21x - d21 * e3x, ay = r21y - d21 * e3y, az = r21z - d21 * e3z;
+      b.e1[0][l] = ax; b.e1[1][l] = ay; b.e1[2][l] = az;
+      const double s = ax * ax + ay * ay + az * az;
+      b.sq[l] = s > 0.0 ? s : 1.0;
+    }
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    for (std::size_t l = 0; l < n; ++l) {
+      const double n1 = b.sq[l];
+      const double e1x = b.e1[0][l] * n1, e1y = b.e1[1][l] * n1, e1z = b.e1[2][l] * n1;
+      b.e1[0][l] = e1x; b.e1[1][l] = e1y; b.e1[2][l] = e1z;
+      const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
+      b.e2[0][l] = e3y * e1z - e3z * e1y;
+      b.e2[1][l] = e3z * e1x - e3x * e1z;
+      b.e2[2][l] = e3x * e1y - e3y * e1x;
+    }
+    for (std::size_t l = 0; l < n; ++l) {
+      double xc = 0.25 * b.X[0][l], yc = 0.25 * b.Y[0][l], zc = 0.25 * b.Z[0][l];
+      for (int i = 1; i < 4; ++i) {
+        xc += 0.25 * b.X[i][l];
+        yc += 0.25 * b.Y[i][l];
+        zc += 0.25 * b.Z[i][l];
+      }
+      const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
+      const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
+      const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
+      for (int i = 0; i < 4; ++i) {
+        const double d0 = b.X[i][l] - xc, d1 = b.Y[i][l] - yc, d2 = b.Z[i][l] - zc;
+        const double xi = d0 * e1x + d1 * e1y + d2 * e1z;
+        const double yi = d0 * e2x + d1 * e2y + d2 * e2z;
+        const double zi = d0 * e3x + d1 * e3y + d2 * e3z;
+        b.x[i][l] = xi; b.y[i][l] = yi; b.zw[i][l] = zi;
+      }
+      b.A[l] = 0.5 * ((b.x[2][l] - b.x[0][l]) * (b.y[3][l] - b.y[1][l]) -
+                      (b.x[3][l] - b.x[1][l]) * (b.y[2][l] - b.y[0][l]));
+    }
+}
 
 }  // namespace
 
@@ -98,66 +160,23 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     // One nodal field pair at a time (few live pointers: no register spills).
     gather_positions<4>(b, n, nv, hdt);
     gather_spins<4>(b, n, nv);
-    // Local frame: e3 = r31 x r42 / |.|, e1 along r21 projected, e2 = e3 x e1.
+    // Frame, local coordinates and area on the mid-step geometry; rates.
+    local_geometry(b, n);
     for (std::size_t l = 0; l < n; ++l) {
-      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
-      const double r42x = b.X[3][l] - b.X[1][l], r42y = b.Y[3][l] - b.Y[1][l], r42z = b.Z[3][l] - b.Z[1][l];
-      const double cx = r31y * r42z - r31z * r42y, cy = r31z * r42x - r31x * r42z, cz3 = r31x * r42y - r31y * r42x;
-      b.e3[0][l] = cx; b.e3[1][l] = cy; b.e3[2][l] = cz3;
-      const double s = cx * cx + cy * cy + cz3 * cz3;
-      b.sq[l] = s > 0.0 ? s : 1.0;  // folded to a line: finite stand-in (masked)
-    }
-    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
-    for (std::size_t l = 0; l < n; ++l) {
-      const double n3 = b.sq[l];
-      const double e3x = b.e3[0][l] * n3, e3y = b.e3[1][l] * n3, e3z = b.e3[2][l] * n3;
-      b.e3[0][l] = e3x; b.e3[1][l] = e3y; b.e3[2][l] = e3z;
-      const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
-      const double d21 = r21x * e3x + r21y * e3y + r21z * e3z;
-      const double ax = r21x - d21 * e3x, ay = r21y - d21 * e3y, az = r21z - d21 * e3z;
-      b.e1[0][l] = ax; b.e1[1][l] = ay; b.e1[2][l] = az;
-      const double s = ax * ax + ay * ay + az * az;
-      b.sq[l] = s > 0.0 ? s : 1.0;
-    }
-    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
-    for (std::size_t l = 0; l < n; ++l) {
-      const double n1 = b.sq[l];
-      const double e1x = b.e1[0][l] * n1, e1y = b.e1[1][l] * n1, e1z = b.e1[2][l] * n1;
-      b.e1[0][l] = e1x; b.e1[1][l] = e1y; b.e1[2][l] = e1z;
-      const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
-      b.e2[0][l] = e3y * e1z - e3z * e1y;
-      b.e2[1][l] = e3z * e1x - e3x * e1z;
-      b.e2[2][l] = e3x * e1y - e3y * e1x;
-    }
-    // Local coordinates about the centre, velocities and rotations (projected by the
-    // rigid links of the warped nodes), area, ok mask.
-    for (std::size_t l = 0; l < n; ++l) {
-      double xc = 0.25 * b.X[0][l], yc = 0.25 * b.Y[0][l], zc = 0.25 * b.Z[0][l];
-      for (int i = 1; i < 4; ++i) {
-        xc += 0.25 * b.X[i][l];
-        yc += 0.25 * b.Y[i][l];
-        zc += 0.25 * b.Z[i][l];
-      }
       const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
       const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
       const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
       for (int i = 0; i < 4; ++i) {
-        const double d0 = b.X[i][l] - xc, d1 = b.Y[i][l] - yc, d2 = b.Z[i][l] - zc;
-        const double xi = d0 * e1x + d1 * e1y + d2 * e1z;
-        const double yi = d0 * e2x + d1 * e2y + d2 * e2z;
-        const double zi = d0 * e3x + d1 * e3y + d2 * e3z;
+        const double zi = b.zw[i][l];
         const double wx = b.WX[i][l], wy = b.WY[i][l], wz = b.WZ[i][l];
         const double vgx = b.VX[i][l], vgy = b.VY[i][l], vgz = b.VZ[i][l];
         const double txi = wx * e1x + wy * e1y + wz * e1z;
         const double tyi = wx * e2x + wy * e2y + wz * e2z;
-        b.x[i][l] = xi; b.y[i][l] = yi; b.zw[i][l] = zi;
         b.tx[i][l] = txi; b.ty[i][l] = tyi;
         b.vx[i][l] = vgx * e1x + vgy * e1y + vgz * e1z - zi * tyi;
         b.vy[i][l] = vgx * e2x + vgy * e2y + vgz * e2z + zi * txi;
         b.vz[i][l] = vgx * e3x + vgy * e3y + vgz * e3z;
       }
-      b.A[l] = 0.5 * ((b.x[2][l] - b.x[0][l]) * (b.y[3][l] - b.y[1][l]) -
-                      (b.x[3][l] - b.x[1][l]) * (b.y[2][l] - b.y[0][l]));
     }
     for (std::size_t l = 0; l < n; ++l) {
       const auto e = static_cast<std::size_t>(idx[l]);
@@ -233,6 +252,37 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
       b.q[2][l] = n0; b.q[3][l] = n1; b.q[4][l] = n2; b.q[5][l] = n3; b.q[6][l] = n4;
       b.dEhg[l] = 0.5 * dt * ((h0 + n0) * qmx + (h1 + n1) * qmy + (h2 + n2) * qw + (h3 + n3) * qtx + (h4 + n4) * qty);
     }
+    // The forces act at x^n: frame, local coordinates, B and gamma again on the current
+    // geometry x^n = x^{n-1/2} + dt/2 v^{n-1/2}. (On the mid-step geometry, as the rates,
+    // the force f^{n-1} of the previous cycle sat on x^{n-3/2}, a whole step behind the
+    // rates it is paired with in the work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt: the kernel's
+    // energy then exceeded that work by sigma^{n-1} : (B^{n-1/2} - B^{n-3/2}) v dt / 2 per
+    // step, first order and one-sided, 4.6 J in each clavicle of the frontal hub case.
+    // With forces on x^n the two half steps cancel to second order; Belytschko, Liu &
+    // Moran, Nonlinear Finite Elements, box 6.1: rates at n-1/2, forces at n.)
+    for (int i = 0; i < 4; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        b.X[i][l] += hdt * b.VX[i][l];
+        b.Y[i][l] += hdt * b.VY[i][l];
+        b.Z[i][l] += hdt * b.VZ[i][l];
+      }
+    local_geometry(b, n);
+    for (std::size_t l = 0; l < n; ++l) {
+      const bool good = b.ok[l] != 0.0 && b.A[l] > 0.0;
+      b.okf[l] = good ? 1.0 : 0.0;
+      b.A[l] = good ? b.A[l] : 1.0;
+      const double i2A = 0.5 / b.A[l];
+      const double x0 = b.x[0][l], x1 = b.x[1][l], x2 = b.x[2][l], x3 = b.x[3][l];
+      const double y0 = b.y[0][l], y1 = b.y[1][l], y2 = b.y[2][l], y3 = b.y[3][l];
+      b.B1[0][l] = (y1 - y3) * i2A; b.B1[1][l] = (y2 - y0) * i2A; b.B1[2][l] = (y3 - y1) * i2A; b.B1[3][l] = (y0 - y2) * i2A;
+      b.B2[0][l] = (x3 - x1) * i2A; b.B2[1][l] = (x0 - x2) * i2A; b.B2[2][l] = (x1 - x3) * i2A; b.B2[3][l] = (x2 - x0) * i2A;
+      const double hx = ((x0 - x1) + x2) - x3;
+      const double hy = ((y0 - y1) + y2) - y3;
+      for (int i = 0; i < 4; ++i) {
+        const double hi = (i & 1) ? -1.0 : 1.0;
+        b.gam[i][l] = hi - hx * b.B1[i][l] - hy * b.B2[i][l];
+      }
+    }
     // Internal (resisting) nodal forces in the local frame; the force and moment ON the
     // node (minus the internal ones) in the global frame.
     // Written straight into the slot buffers when the batch's elements are consecutive,
@@ -264,7 +314,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
         const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
         const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
         const double e3x = b.e3[0][l], e3y = b.e3[1][l], e3z = b.e3[2][l];
-        const bool ok = b.ok[l] != 0.0;
+        const bool ok = b.okf[l] != 0.0;
         f0[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1x + fy * e2x + fz * e3x) : 0.0;
         f1[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1y + fy * e2y + fz * e3y) : 0.0;
         f2[4 * l + static_cast<std::size_t>(i)] = ok ? -(fx * e1z + fy * e2z + fz * e3z) : 0.0;
