@@ -23,6 +23,10 @@
 // Drilling rotations carry no stiffness (Radioss Idrill = 0); they are kept bounded by
 // the nodal rotational inertia.
 //
+// Rates on the mid-step geometry x^{n-1/2} (rigid rotations strain nothing), forces on
+// the current geometry x^n (force_geometry): the work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt
+// then equals the energy increment to second order (docs/engine-design.md 14.3).
+//
 // Lanes: as the quad kernel (shell_quad_bt.cpp), the elements are computed in batches
 // of TriaLanes::W (element k of the batch is lane k), every stage a loop over the lanes
 // that GCC vectorises; deleted or degenerate elements are masked on output; each lane
@@ -74,13 +78,92 @@ struct TriaLanes {
   alignas(64) double sc[3][W], ss[3][W], sl[3][W];     // sides: cos, sin, length
   alignas(64) double Bx[6][W], By[6][W];               // rotation rates at the 6 nodes
   alignas(64) double dNx[3][6][W], dNy[3][6][W], kap[3][3][W];
-  alignas(64) double A[W], i2A[W], ok[W], sq[W], dEdev[W], lmax2[W], dte[W];
+  alignas(64) double A[W], i2A[W], ok[W], okf[W], sq[W], dEdev[W], dE[W], lmax2[W], dte[W];
+  alignas(64) double Mg[3][3][W];                      // moments at the 3 points (force stage)
   alignas(64) double md[9][W];                         // extra: deviatoric moments at the points
   alignas(64) double Fx[6][W], Fy[6][W], Fw[3][W];
   ThicknessLanes<W> th;
   alignas(64) double f[6][W * 3];                      // force, moment ON the nodes, global,
                                                        // slot order (lane * 3 + node)
 };
+
+// The geometry of the force stage on x^n = x^{n-1/2} + dt/2 v^{n-1/2}: frame, local
+// coordinates, area (okf: ok and not folded there), B, sides (cos, sin, length) and the
+// Cartesian derivatives dNx, dNy at the 3 points, with the expressions of the rate stage.
+// (Forces on the mid-step geometry lag the rates of the energy increment by a step in the
+// work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt; docs/engine-design.md 14.3.)
+void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
+  for (int i = 0; i < 3; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      b.X[i][l] += hdt * b.VX[i][l];
+      b.Y[i][l] += hdt * b.VY[i][l];
+      b.Z[i][l] += hdt * b.VZ[i][l];
+    }
+  for (std::size_t l = 0; l < n; ++l) {
+    const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
+    const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+    const double cx = r21y * r31z - r21z * r31y, cy = r21z * r31x - r21x * r31z, cz = r21x * r31y - r21y * r31x;
+    b.ez[0][l] = cx; b.ez[1][l] = cy; b.ez[2][l] = cz;
+    b.sq[l] = cx * cx + cy * cy + cz * cz;
+    b.l21[l] = r21x * r21x + r21y * r21y + r21z * r21z;
+  }
+  for (std::size_t l = 0; l < n; ++l) b.sq[l] = std::sqrt(b.sq[l]);
+  for (std::size_t l = 0; l < n; ++l) b.l21[l] = std::sqrt(b.l21[l]);
+  for (std::size_t l = 0; l < n; ++l) {
+    const double A = 0.5 * b.sq[l];
+    const bool good = b.ok[l] != 0.0 && A > 0.0 && b.l21[l] > 0.0;
+    b.okf[l] = good ? 1.0 : 0.0;
+    b.A[l] = good ? A : 1.0;
+    b.sq[l] = good ? b.sq[l] : 1.0;
+    b.l21[l] = good ? b.l21[l] : 1.0;
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    const double nz = b.sq[l], l21 = b.l21[l];
+    const double ezx = b.ez[0][l] / nz, ezy = b.ez[1][l] / nz, ezz = b.ez[2][l] / nz;
+    b.ez[0][l] = ezx; b.ez[1][l] = ezy; b.ez[2][l] = ezz;
+    const double exx = (b.X[1][l] - b.X[0][l]) / l21, exy = (b.Y[1][l] - b.Y[0][l]) / l21,
+                 exz = (b.Z[1][l] - b.Z[0][l]) / l21;
+    b.ex[0][l] = exx; b.ex[1][l] = exy; b.ex[2][l] = exz;
+    const double eyx = ezy * exz - ezz * exy, eyy = ezz * exx - ezx * exz, eyz = ezx * exy - ezy * exx;
+    b.ey[0][l] = eyx; b.ey[1][l] = eyy; b.ey[2][l] = eyz;
+    const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
+    b.x2[l] = r31x * exx + r31y * exy + r31z * exz;
+    b.y2[l] = r31x * eyx + r31y * eyy + r31z * eyz;
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    const double x[3] = {0.0, b.l21[l], b.x2[l]}, y[3] = {0.0, 0.0, b.y2[l]};
+    const double i2A = 0.5 / b.A[l];
+    b.B1[0][l] = (y[1] - y[2]) * i2A; b.B1[1][l] = (y[2] - y[0]) * i2A; b.B1[2][l] = (y[0] - y[1]) * i2A;
+    b.B2[0][l] = (x[2] - x[1]) * i2A; b.B2[1][l] = (x[0] - x[2]) * i2A; b.B2[2][l] = (x[1] - x[0]) * i2A;
+    for (int k = 0; k < 3; ++k) {
+      const int i = kSide[k][0], j = kSide[k][1];
+      const double dx = x[j] - x[i], dy = y[j] - y[i];
+      b.sc[k][l] = dx;
+      b.ss[k][l] = dy;
+      const double s = dx * dx + dy * dy;
+      b.sl[k][l] = s > 0.0 ? s : 1.0;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+    for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
+  for (int k = 0; k < 3; ++k)
+    for (std::size_t l = 0; l < n; ++l) {
+      const double len = b.sl[k][l];
+      b.sc[k][l] = b.sc[k][l] / len;
+      b.ss[k][l] = b.ss[k][l] / len;
+    }
+  for (std::size_t l = 0; l < n; ++l) b.i2A[l] = 0.5 / b.A[l];
+  for (int gp = 0; gp < 3; ++gp)
+    for (int a = 0; a < 6; ++a) {
+      const double dxi = kQD.dxi[gp][a], deta = kQD.deta[gp][a];
+      const double *__restrict i2A = b.i2A, *__restrict x21 = b.l21, *__restrict x31 = b.x2, *__restrict y31 = b.y2;
+      double *__restrict dNx = b.dNx[gp][a], *__restrict dNy = b.dNy[gp][a];
+      for (std::size_t l = 0; l < n; ++l) {
+        dNx[l] = y31[l] * dxi * i2A[l];  // y21 = 0
+        dNy[l] = (-x31[l] * dxi + x21[l] * deta) * i2A[l];
+      }
+    }
+}
 
 }  // namespace
 
@@ -249,7 +332,6 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       double kc[3];
       for (int c = 0; c < 3; ++c) kc[c] = (b.kap[0][c][l] + b.kap[1][c][l] + b.kap[2][c][l]) / 3.0;
       double dEdev = 0;
-      double Mg[3][3];
       for (int gp = 0; gp < 3; ++gp) {
         const double d0 = (b.kap[gp][0][l] - kc[0]) * dt, d1 = (b.kap[gp][1][l] - kc[1]) * dt,
                      d2 = (b.kap[gp][2][l] - kc[2]) * dt;
@@ -259,11 +341,18 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         const double m2 = o2 + Db * 0.5 * (1.0 - nu) * d2;
         b.md[3 * gp][l] = m0; b.md[3 * gp + 1][l] = m1; b.md[3 * gp + 2][l] = m2;
         dEdev += 0.5 * ((o0 + m0) * d0 + (o1 + m1) * d1 + (o2 + m2) * d2);
-        Mg[gp][0] = b.th.M[0][l] + m0;
-        Mg[gp][1] = b.th.M[1][l] + m1;
-        Mg[gp][2] = b.th.M[2][l] + m2;
+        b.Mg[gp][0][l] = b.th.M[0][l] + m0;
+        b.Mg[gp][1][l] = b.th.M[1][l] + m1;
+        b.Mg[gp][2][l] = b.th.M[2][l] + m2;
       }
       b.dEdev[l] = dEdev;
+      b.dE[l] = b.A[l] * b.th.dE[l] + b.A[l] / 3.0 * dEdev;  // on the mid-step area
+    }
+    force_geometry(b, n, hdt);
+    for (std::size_t l = 0; l < n; ++l) {
+      double Mg[3][3];
+      for (int gp = 0; gp < 3; ++gp)
+        for (int c = 0; c < 3; ++c) Mg[gp][c] = b.Mg[gp][c][l];
       const double A3 = b.A[l] / 3.0;
       double Fx[6] = {}, Fy[6] = {};
       for (int gp = 0; gp < 3; ++gp)
@@ -312,7 +401,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         const double exx = b.ex[0][l], exy = b.ex[1][l], exz = b.ex[2][l];
         const double eyx = b.ey[0][l], eyy = b.ey[1][l], eyz = b.ey[2][l];
         const double ezx = b.ez[0][l], ezy = b.ez[1][l], ezz = b.ez[2][l];
-        const bool ok = b.ok[l] != 0.0;
+        const bool ok = b.okf[l] != 0.0;
         f0[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exx + fy * eyx + fz * ezx) : 0.0;
         f1[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exy + fy * eyy + fz * ezy) : 0.0;
         f2[3 * l + static_cast<std::size_t>(i)] = ok ? -(fx * exz + fy * eyz + fz * ezz) : 0.0;
@@ -320,7 +409,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         f4[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exy + my * eyy) : 0.0;
         f5[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exz + my * eyz) : 0.0;
       }
-    // Stable step 2A / longest side / c on the mid-step geometry.
+    // Stable step 2A / longest side / c on the current geometry.
     for (std::size_t l = 0; l < n; ++l) {
       double lmax2 = 0;
       for (int i = 0; i < 3; ++i) {
@@ -351,7 +440,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       for (int c = 0; c < 9; ++c) m9[c] = b.md[c][l];
       const int nf = static_cast<int>(b.th.nfail[l]);
       g.n_failed[e] = static_cast<std::uint8_t>(nf);
-      const double dE = b.A[l] * b.th.dE[l] + b.A[l] / 3.0 * b.dEdev[l];
+      const double dE = b.dE[l];
       g.eint[e] += dE;
       tot.de_int += dE;
       if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
