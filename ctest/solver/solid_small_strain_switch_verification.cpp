@@ -114,45 +114,53 @@ void check(const CrushResult& r, double M, bool switched) {
 
 constexpr int kCycles = static_cast<int>(1.2 * kH0 / (kV * kDt));  // to h = -0.2 h0
 
+// Crushes group g (one brick) with the switch on or off and checks the result: with it,
+// the analytic large- and small-strain stresses and the energy balance; without, the
+// control inversion.
+template <class Group>
+void crush_and_check(Model& m, Group& g, bool enable) {
+  const double M = g.material.lambda + 2.0 * g.material.G;
+  auto stress = [&] {
+    double s[6];
+    g.stress(0, s);
+    return s[2];
+  };
+  auto frozen = [&] { return g.frozen_geometry.active() && g.frozen_geometry.frozen[0] != 0; };
+  const CrushResult r = crush(m, g, kCycles, stress, frozen, M);
+  if (!enable) {
+    EXPECT_TRUE(r.inverted) << "control: without /DT/BRICK/CST the brick inverts";
+    return;
+  }
+  check(r, M, frozen());
+}
+
+// One kH0 cube of the elastic material (nodes, masses and its one-point group in m).
+SolidGroup& make_cube(Model& m) {
+  BrickBlock b;
+  b.nx = b.ny = b.nz = 1;
+  b.lx = b.ly = b.lz = kH0;
+  b.material = elastic();
+  return make_brick_block(m, b);
+}
+
 TEST(SolidSmallStrainSwitch, OnePointBrickCrushedThroughWithoutInverting) {
   for (bool enable : {false, true}) {
     Model m;
-    BrickBlock b;
-    b.nx = b.ny = b.nz = 1;
-    b.lx = b.ly = b.lz = kH0;
-    b.material = elastic();
-    SolidGroup& g = make_brick_block(m, b);
+    SolidGroup& g = make_cube(m);
     g.qa = g.qb = 0.0;
     g.small_strain.enabled = enable;
     g.small_strain.vdef_min = kVdef;
     if (enable) g.frozen_geometry.allocate(g.n_elements);
-    const double M = g.material.lambda + 2.0 * g.material.G;
-    auto stress = [&] {
-      double s[6];
-      g.stress(0, s);
-      return s[2];
-    };
-    auto frozen = [&] { return g.frozen_geometry.active() && g.frozen_geometry.frozen[0] != 0; };
-    const CrushResult r = crush(m, g, kCycles, stress, frozen, M);
-    if (!enable) {
-      EXPECT_TRUE(r.inverted) << "control: without /DT/BRICK/CST the brick inverts";
-      continue;
-    }
-    check(r, M, frozen());
+    crush_and_check(m, g, enable);
   }
 }
 
 TEST(SolidSmallStrainSwitch, Ha8BrickCrushedThroughWithoutInverting) {
   for (bool enable : {false, true}) {
     Model m;
-    BrickBlock b;
-    b.nx = b.ny = b.nz = 1;
-    b.lx = b.ly = b.lz = kH0;
-    b.material = elastic();
-    make_brick_block(m, b);  // nodes and masses; the HA8 group below replaces the one-point group
-    SolidGroup& one = *static_cast<SolidGroup*>(m.groups.front().get());
+    const SolidGroup& one = make_cube(m);  // nodes and masses; the HA8 group below stands in for it
     BrickHa8Group g;
-    g.material = b.material;
+    g.material = one.material;
     g.connectivity = one.connectivity;
     g.n_elements = 1;
     g.nodes_per_element = 8;
@@ -160,19 +168,7 @@ TEST(SolidSmallStrainSwitch, Ha8BrickCrushedThroughWithoutInverting) {
     g.small_strain.enabled = enable;
     g.small_strain.vdef_min = kVdef;
     ASSERT_EQ(g.initialize(m.nodes), kNoIndex);
-    const double M = g.material.lambda + 2.0 * g.material.G;
-    auto stress = [&] {
-      double s[6];
-      g.stress(0, s);
-      return s[2];
-    };
-    auto frozen = [&] { return g.frozen_geometry.active() && g.frozen_geometry.frozen[0] != 0; };
-    const CrushResult r = crush(m, g, kCycles, stress, frozen, M);
-    if (!enable) {
-      EXPECT_TRUE(r.inverted) << "control: without /DT/BRICK/CST the brick inverts";
-      continue;
-    }
-    check(r, M, frozen());
+    crush_and_check(m, g, enable);
   }
 }
 
