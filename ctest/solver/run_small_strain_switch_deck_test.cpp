@@ -6,7 +6,8 @@
 //  - with /DT/BRICK/CST/1 and VDEF_min 0.3 the brick switches to small strain and the run
 //    ends normally with the top face at least 1.5 mm down, below the fixed bottom face;
 //  - Tmin 0 or an ASP_min (not supported) is a deck error naming the engine file, the
-//    keyword and the field, exit code 1.
+//    keyword and the field, exit code 1;
+//  - on a deck with tetrahedra (which keep the large strain formulation) the run says so.
 #include "example_deck_runner.hpp"
 
 #include <filesystem>
@@ -79,4 +80,18 @@ TEST(SmallStrainSwitchDeck, AspectRatioSwitchIsNotSupported) {
   EXPECT_NE(out.find("inverted_element_0001.rad:"), std::string::npos) << out;
   EXPECT_NE(out.find("ASP_min"), std::string::npos) << out;
   EXPECT_NE(out.find("not supported"), std::string::npos) << out;
+}
+
+TEST(SmallStrainSwitchDeck, TetrahedraAreNamedAsNotSwitching) {
+  const fs::path src = hbm::solver::testing::example_deck("tetra_prism_uniaxial").parent_path();
+  const fs::path dir = fs::current_path() / ("cst_tetra" + hbm::solver::testing::per_process_suffix());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(src / "tetra_prism_uniaxial_0000.rad", dir / "tetra_prism_uniaxial_0000.rad");
+  std::ofstream(dir / "tetra_prism_uniaxial_0001.rad")
+      << hbm::solver::testing::read_text(src / "tetra_prism_uniaxial_0001.rad") << "/DT/BRICK/CST/0\n0.9 1e-9\n";
+  std::string out;
+  EXPECT_EQ(run_solver(dir / "tetra_prism_uniaxial_0000.rad", out), 0) << out;
+  EXPECT_NE(out.find("tetra_prism_uniaxial_0001.rad:"), std::string::npos) << out;
+  EXPECT_NE(out.find("/TETRA4 elements do not switch"), std::string::npos) << out;
 }

@@ -189,7 +189,11 @@ bool read_ha8_property(BuildContext& ctx, const Part& part, BrickHa8Group& g) {
 // ASP_min (tetra collapse) is not supported: an error, not a silent ignore.
 SmallStrainSwitch read_small_strain_switch(BuildContext& ctx) {
   SmallStrainSwitch sw;
-  for (const hbm::deck::Card* c : ctx.engine().cards_of("/DT/BRICK/CST")) {
+  const auto cards = ctx.engine().cards_of("/DT/BRICK/CST");
+  // Tetrahedra keep the large strain formulation: say so rather than switch silently less.
+  if (!cards.empty() && !ctx.starter().cards_of("/TETRA4").empty())
+    ctx.warning(*cards.back(), "/TETRA4 elements do not switch to small strain (8-node bricks only)");
+  for (const hbm::deck::Card* c : cards) {
     sw.enabled = true;
     sw.tsca = c->real(0, "Tsca");
     sw.tmin = c->real(0, "Tmin");
