@@ -87,18 +87,8 @@ struct TriaLanes {
                                                        // slot order (lane * 3 + node)
 };
 
-// The geometry of the force stage on x^n = x^{n-1/2} + dt/2 v^{n-1/2}: frame, local
-// coordinates, area (okf: ok and not folded there), B, sides (cos, sin, length) and the
-// Cartesian derivatives dNx, dNy at the 3 points, with the expressions of the rate stage.
-// (Forces on the mid-step geometry lag the rates of the energy increment by a step in the
-// work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt; docs/engine-design.md 14.3.)
-void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
-  for (int i = 0; i < 3; ++i)
-    for (std::size_t l = 0; l < n; ++l) {
-      b.X[i][l] += hdt * b.VX[i][l];
-      b.Y[i][l] += hdt * b.VY[i][l];
-      b.Z[i][l] += hdt * b.VZ[i][l];
-    }
+// Unnormalised normal r21 x r31 (ez), its length (sq) and |r21| (l21) from X, Y, Z.
+void frame_lengths(TriaLanes& b, std::size_t n) {
   for (std::size_t l = 0; l < n; ++l) {
     const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
     const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
@@ -109,14 +99,11 @@ void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
   }
   for (std::size_t l = 0; l < n; ++l) b.sq[l] = std::sqrt(b.sq[l]);
   for (std::size_t l = 0; l < n; ++l) b.l21[l] = std::sqrt(b.l21[l]);
-  for (std::size_t l = 0; l < n; ++l) {
-    const double A = 0.5 * b.sq[l];
-    const bool good = b.ok[l] != 0.0 && A > 0.0 && b.l21[l] > 0.0;
-    b.okf[l] = good ? 1.0 : 0.0;
-    b.A[l] = good ? A : 1.0;
-    b.sq[l] = good ? b.sq[l] : 1.0;
-    b.l21[l] = good ? b.l21[l] : 1.0;
-  }
+}
+
+// Local frame (after frame_lengths and masking): e3 = ez / |ez|, e1 along node 1 -> 2,
+// e2 = e3 x e1; local coordinates of node 3 (node 1 at the origin, node 2 on the x axis).
+void local_frame(TriaLanes& b, std::size_t n) {
   for (std::size_t l = 0; l < n; ++l) {
     const double nz = b.sq[l], l21 = b.l21[l];
     const double ezx = b.ez[0][l] / nz, ezy = b.ez[1][l] / nz, ezz = b.ez[2][l] / nz;
@@ -130,6 +117,11 @@ void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
     b.x2[l] = r31x * exx + r31y * exy + r31z * exz;
     b.y2[l] = r31x * eyx + r31y * eyy + r31z * eyz;
   }
+}
+
+// CST B matrix and the DKT sides (sc, ss: side vector; sl: length, squared until the
+// caller's square root) in local coordinates.
+void side_geometry(TriaLanes& b, std::size_t n) {
   for (std::size_t l = 0; l < n; ++l) {
     const double x[3] = {0.0, b.l21[l], b.x2[l]}, y[3] = {0.0, 0.0, b.y2[l]};
     const double i2A = 0.5 / b.A[l];
@@ -144,6 +136,31 @@ void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
       b.sl[k][l] = s > 0.0 ? s : 1.0;
     }
   }
+}
+
+// The geometry of the force stage on x^n = x^{n-1/2} + dt/2 v^{n-1/2}: frame, local
+// coordinates, area (okf: ok and not folded there), B, sides (cos, sin, length) and the
+// Cartesian derivatives dNx, dNy at the 3 points, with the expressions of the rate stage.
+// (Forces on the mid-step geometry lag the rates of the energy increment by a step in the
+// work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt; docs/engine-design.md 14.3.)
+void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
+  for (int i = 0; i < 3; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      b.X[i][l] += hdt * b.VX[i][l];
+      b.Y[i][l] += hdt * b.VY[i][l];
+      b.Z[i][l] += hdt * b.VZ[i][l];
+    }
+  frame_lengths(b, n);
+  for (std::size_t l = 0; l < n; ++l) {
+    const double A = 0.5 * b.sq[l];
+    const bool good = b.ok[l] != 0.0 && A > 0.0 && b.l21[l] > 0.0;
+    b.okf[l] = good ? 1.0 : 0.0;
+    b.A[l] = good ? A : 1.0;
+    b.sq[l] = good ? b.sq[l] : 1.0;
+    b.l21[l] = good ? b.l21[l] : 1.0;
+  }
+  local_frame(b, n);
+  side_geometry(b, n);
   for (int k = 0; k < 3; ++k)
     for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
   for (int k = 0; k < 3; ++k)
@@ -198,16 +215,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
     gather_positions<3>(b, n, nv, hdt);
     gather_spins<3>(b, n, nv);
     // Local frame: e1 along node 1 -> 2, e3 = r21 x r31 / |.|, e2 = e3 x e1; area.
-    for (std::size_t l = 0; l < n; ++l) {
-      const double r21x = b.X[1][l] - b.X[0][l], r21y = b.Y[1][l] - b.Y[0][l], r21z = b.Z[1][l] - b.Z[0][l];
-      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
-      const double cx = r21y * r31z - r21z * r31y, cy = r21z * r31x - r21x * r31z, cz = r21x * r31y - r21y * r31x;
-      b.ez[0][l] = cx; b.ez[1][l] = cy; b.ez[2][l] = cz;
-      b.sq[l] = cx * cx + cy * cy + cz * cz;
-      b.l21[l] = r21x * r21x + r21y * r21y + r21z * r21z;
-    }
-    for (std::size_t l = 0; l < n; ++l) b.sq[l] = std::sqrt(b.sq[l]);
-    for (std::size_t l = 0; l < n; ++l) b.l21[l] = std::sqrt(b.l21[l]);
+    frame_lengths(b, n);
     for (std::size_t l = 0; l < n; ++l) {
       const auto e = static_cast<std::size_t>(idx[l]);
       const double A = 0.5 * b.sq[l];
@@ -218,19 +226,11 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       b.sq[l] = good ? b.sq[l] : 1.0;
       b.l21[l] = good ? b.l21[l] : 1.0;
     }
+    local_frame(b, n);
     for (std::size_t l = 0; l < n; ++l) {
-      const double nz = b.sq[l], l21 = b.l21[l];
-      const double ezx = b.ez[0][l] / nz, ezy = b.ez[1][l] / nz, ezz = b.ez[2][l] / nz;
-      b.ez[0][l] = ezx; b.ez[1][l] = ezy; b.ez[2][l] = ezz;
-      const double exx = (b.X[1][l] - b.X[0][l]) / l21, exy = (b.Y[1][l] - b.Y[0][l]) / l21,
-                   exz = (b.Z[1][l] - b.Z[0][l]) / l21;
-      b.ex[0][l] = exx; b.ex[1][l] = exy; b.ex[2][l] = exz;
-      const double eyx = ezy * exz - ezz * exy, eyy = ezz * exx - ezx * exz, eyz = ezx * exy - ezy * exx;
-      b.ey[0][l] = eyx; b.ey[1][l] = eyy; b.ey[2][l] = eyz;
-      // Local coordinates: node 1 at the origin, node 2 on the x axis.
-      const double r31x = b.X[2][l] - b.X[0][l], r31y = b.Y[2][l] - b.Y[0][l], r31z = b.Z[2][l] - b.Z[0][l];
-      b.x2[l] = r31x * exx + r31y * exy + r31z * exz;
-      b.y2[l] = r31x * eyx + r31y * eyy + r31z * eyz;
+      const double exx = b.ex[0][l], exy = b.ex[1][l], exz = b.ex[2][l];
+      const double eyx = b.ey[0][l], eyy = b.ey[1][l], eyz = b.ey[2][l];
+      const double ezx = b.ez[0][l], ezy = b.ez[1][l], ezz = b.ez[2][l];
       for (int i = 0; i < 3; ++i) {
         const double Vx = b.VX[i][l], Vy = b.VY[i][l], Vz = b.VZ[i][l];
         const double Wx = b.WX[i][l], Wy = b.WY[i][l], Wz = b.WZ[i][l];
@@ -242,11 +242,8 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
     }
     // CST membrane; DKT side geometry (lengths in a loop of their own).
+    side_geometry(b, n);
     for (std::size_t l = 0; l < n; ++l) {
-      const double x[3] = {0.0, b.l21[l], b.x2[l]}, y[3] = {0.0, 0.0, b.y2[l]};
-      const double i2A = 0.5 / b.A[l];
-      b.B1[0][l] = (y[1] - y[2]) * i2A; b.B1[1][l] = (y[2] - y[0]) * i2A; b.B1[2][l] = (y[0] - y[1]) * i2A;
-      b.B2[0][l] = (x[2] - x[1]) * i2A; b.B2[1][l] = (x[0] - x[2]) * i2A; b.B2[2][l] = (x[1] - x[0]) * i2A;
       double dxx = 0, dyy = 0, dxy = 0;
       for (int i = 0; i < 3; ++i) {
         dxx += b.B1[i][l] * b.vx[i][l];
@@ -254,14 +251,6 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         dxy += b.B2[i][l] * b.vx[i][l] + b.B1[i][l] * b.vy[i][l];
       }
       b.th.dem[0][l] = dxx * dt; b.th.dem[1][l] = dyy * dt; b.th.dem[2][l] = dxy * dt;
-      for (int k = 0; k < 3; ++k) {
-        const int i = kSide[k][0], j = kSide[k][1];
-        const double dx = x[j] - x[i], dy = y[j] - y[i];
-        b.sc[k][l] = dx;
-        b.ss[k][l] = dy;
-        const double s = dx * dx + dy * dy;
-        b.sl[k][l] = s > 0.0 ? s : 1.0;
-      }
     }
     for (int k = 0; k < 3; ++k)
       for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
