@@ -31,46 +31,14 @@ inline constexpr double kHourglass[4][8] = {
 inline constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
-// Volume gradient (bx, by, bz per node), volume, largest face area.
-inline void volume_gradient(const double* x, const double* y, const double* z, double* bx,
-                            double* by, double* bz, double& volume, double& max_face_area) {
-  for (int i = 0; i < 8; ++i) bx[i] = by[i] = bz[i] = 0.0;
-  double amax2 = 0.0;
-  for (const auto& f : kFaces) {
-    const int p1 = f[0], p2 = f[1], p3 = f[2], p4 = f[3];
-    const double ax = 0.25 * (-x[p1] + x[p2] + x[p3] - x[p4]);
-    const double ay = 0.25 * (-y[p1] + y[p2] + y[p3] - y[p4]);
-    const double az = 0.25 * (-z[p1] + z[p2] + z[p3] - z[p4]);
-    const double cx = 0.25 * (-x[p1] - x[p2] + x[p3] + x[p4]);
-    const double cy = 0.25 * (-y[p1] - y[p2] + y[p3] + y[p4]);
-    const double cz = 0.25 * (-z[p1] - z[p2] + z[p3] + z[p4]);
-    const double tx = 0.25 * (x[p1] - x[p2] + x[p3] - x[p4]);
-    const double ty = 0.25 * (y[p1] - y[p2] + y[p3] - y[p4]);
-    const double tz = 0.25 * (z[p1] - z[p2] + z[p3] - z[p4]);
-    // a x c, (a x b)/3, (b x c)/3 with b = (tx, ty, tz)
-    const double acx = ay * cz - az * cy, acy = az * cx - ax * cz, acz = ax * cy - ay * cx;
-    const double abx = (ay * tz - az * ty) / 3.0, aby = (az * tx - ax * tz) / 3.0,
-                 abz = (ax * ty - ay * tx) / 3.0;
-    const double bcx = (ty * cz - tz * cy) / 3.0, bcy = (tz * cx - tx * cz) / 3.0,
-                 bcz = (tx * cy - ty * cx) / 3.0;
-    // s_a = (-1, 1, 1, -1), t_a = (-1, -1, 1, 1)
-    bx[p1] += acx - abx - bcx; by[p1] += acy - aby - bcy; bz[p1] += acz - abz - bcz;
-    bx[p2] += acx + abx - bcx; by[p2] += acy + aby - bcy; bz[p2] += acz + abz - bcz;
-    bx[p3] += acx + abx + bcx; by[p3] += acy + aby + bcy; bz[p3] += acz + abz + bcz;
-    bx[p4] += acx - abx + bcx; by[p4] += acy - aby + bcy; bz[p4] += acz - abz + bcz;
-    amax2 = std::max(amax2, acx * acx + acy * acy + acz * acz);
-  }
-  double v = 0.0;
-  for (int i = 0; i < 8; ++i) v += x[i] * bx[i] + y[i] * by[i] + z[i] * bz[i];
-  volume = v / 3.0;
-  max_face_area = 4.0 * std::sqrt(amax2);
-}
-
 // Lane form of volume_gradient for a batch of elements: arrays [node][lane] of width W,
 // lanes 0..n-1. Same face formula; each face is one loop over the lanes (vectorised).
 // amax2 receives the largest |a x c|^2 of the faces (face area = 4 sqrt(amax2)), so the
 // caller takes the square root only where it needs it.
 namespace detail {
+// One face (nodes p1..p4, outward normal) of n elements: a = (s-derivative), c =
+// (t-derivative), b = twist; adds a x c -+ (a x b)/3 -+ (b x c)/3 to the face nodes' gradients
+// (s_a = (-1, 1, 1, -1), t_a = (-1, -1, 1, 1)) and keeps the largest |a x c|^2.
 inline void face_gradient_lanes(std::size_t n, const double* __restrict x1, const double* __restrict x2,
                                 const double* __restrict x3, const double* __restrict x4,
                                 const double* __restrict y1, const double* __restrict y2,
@@ -105,6 +73,24 @@ inline void face_gradient_lanes(std::size_t n, const double* __restrict x1, cons
   }
 }
 }  // namespace detail
+
+// Volume gradient (bx, by, bz per node), volume, largest face area of one element: the
+// face formula of the lane form with one lane.
+inline void volume_gradient(const double* x, const double* y, const double* z, double* bx,
+                            double* by, double* bz, double& volume, double& max_face_area) {
+  for (int i = 0; i < 8; ++i) bx[i] = by[i] = bz[i] = 0.0;
+  double amax2 = 0.0;
+  for (const auto& f : kFaces) {
+    const int p1 = f[0], p2 = f[1], p3 = f[2], p4 = f[3];
+    detail::face_gradient_lanes(1, x + p1, x + p2, x + p3, x + p4, y + p1, y + p2, y + p3, y + p4, z + p1,
+                                z + p2, z + p3, z + p4, bx + p1, bx + p2, bx + p3, bx + p4, by + p1, by + p2,
+                                by + p3, by + p4, bz + p1, bz + p2, bz + p3, bz + p4, &amax2);
+  }
+  double v = 0.0;
+  for (int i = 0; i < 8; ++i) v += x[i] * bx[i] + y[i] * by[i] + z[i] * bz[i];
+  volume = v / 3.0;
+  max_face_area = 4.0 * std::sqrt(amax2);
+}
 
 template <std::size_t W>
 inline void volume_gradient_lanes(std::size_t n, const double (*x)[W], const double (*y)[W],
