@@ -16,7 +16,8 @@ using hbm::deck::Deck;
 
 namespace {
 
-constexpr int kSolidProp = 1;
+constexpr int kSolidProp = 1;      // soft tissue bricks (LAW34)
+constexpr int kBoneSolidProp = 2;  // bone and thoracolumbar disc bricks (LAW1)
 int shell_prop_id(const FePart& p) { return 1000 + p.id; }
 int spring_prop_id(const FeSpringProp& s) { return 2000 + s.id; }
 int rbody_group_id(const FeRigidBody& r) { return 10000 + r.id; }
@@ -65,9 +66,21 @@ Deck model_cards(const FeModel& m, const std::string& title) {
           .commit();
     }
   }
-  // Properties: one solid property; one shell property per shell part; spring properties.
-  CardBuilder(d, "/PROP/TYPE14", kSolidProp, "solids: 1-point brick, viscous hourglass")
+  // Properties: two solid properties; one shell property per shell part; spring properties.
+  CardBuilder(d, "/PROP/TYPE14", kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass")
       .set_int(0, "Isolid", 1)
+      .set(1, "qa", 1.1)
+      .set(1, "qb", 0.05)
+      .set(1, "h", 0.1)
+      .commit();
+  // Vertebral units and thoracolumbar discs (LAW1) are one or two bricks through their
+  // height and bend with the spine: for a one-point brick that bending is its hourglass
+  // modes. The physical stabilisation (Isolid 24: assumed-strain hourglass stiffness from
+  // G, Belytschko & Bindeman 1993) gives those bricks their elastic bending stiffness; with
+  // the viscous form the spine held 8-15 J of hourglass energy against 0.1-0.2 J internal
+  // in the hub cases (docs/engine-design.md §12).
+  CardBuilder(d, "/PROP/TYPE14", kBoneSolidProp, "bone and disc solids: 1-point brick, physical hourglass")
+      .set_int(0, "Isolid", 24)
       .set(1, "qa", 1.1)
       .set(1, "qb", 0.05)
       .set(1, "h", 0.1)
@@ -109,8 +122,10 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       c.set_int(0, "prop_id", spring_prop_id(m.spring_props[static_cast<std::size_t>(p.spring_prop)]));
       c.set_int(0, "mat_id", 0);
     } else {
-      c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? kSolidProp : shell_prop_id(p));
-      c.set_int(0, "mat_id", m.materials[static_cast<std::size_t>(p.material)].id);
+      const FeMaterial& mat = m.materials[static_cast<std::size_t>(p.material)];
+      const int solid_prop = mat.law == "LAW1" ? kBoneSolidProp : kSolidProp;
+      c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? solid_prop : shell_prop_id(p));
+      c.set_int(0, "mat_id", mat.id);
     }
     c.commit();
   }
