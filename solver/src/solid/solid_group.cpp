@@ -710,10 +710,48 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
   }
   for (std::size_t l = 0; l < n; ++l) b.dte[l] = (2.0 * b.c[l] / b.dte[l]) / (b.qv[l] + b.tmp[l]);
 
+  // Hourglass viscosity limit. The viscous hourglass force -c sum_a gamma_a (gamma_a . v) is
+  // a damper with matrix c sum_a gamma_a gamma_a^T, whose largest eigenvalue lambda is c times
+  // that of the 4 x 4 Gram matrix gamma_a . gamma_b, bounded by its largest absolute row sum
+  // (Gershgorin). Central differences with the damping force on v^{n-1/2} stay stable while
+  // dt <= 2 m / lambda, m the nodal mass (here only this element's share m_e / 8:
+  // conservative). For a parallelepiped the Gram matrix is 8 I and this step is about twice
+  // the dilatational one, so it does not bind; a brick sheared and warped far out of shape
+  // reaches row sums ~ 10^3 (hub_oblique_9p5, flesh at the impactor rim, 16 ms), which
+  // without this limit turned unstable at 1.5 us with no added mass (engine-design.md §12.3).
+  // Where it binds, the element step is 2 (m_e / 8) / lambda, and its nodal stiffness for
+  // mass scaling is the damper's equivalent at the present step, 2 lambda / dt: the nodal
+  // step sqrt(2 m / k) then asks for m >= lambda dt / Tsca^2 (the damper needs lambda dt / 2),
+  // linear in the step as a damper is, instead of the quadratic need of a spring.
+  // b.tmp: that nodal stiffness where the damper binds, else 0.
+  std::fill_n(b.tmp, n, 0.0);
+  if (hourglass != HourglassForm::Stiffness) {
+    const double cf = hourglass_coef * 0.25 * (hourglass == HourglassForm::Physical ? physical_coefficients().viscous : 1.0);
+    for (std::size_t l = 0; l < n; ++l) {
+      double gram[4][4];
+      for (int a = 0; a < 4; ++a)
+        for (int c = a; c < 4; ++c) {
+          double s2 = 0.0;
+          for (int i = 0; i < 8; ++i) s2 += b.gam[a][i][l] * b.gam[c][i][l];
+          gram[a][c] = gram[c][a] = s2;
+        }
+      double row_max = 0.0;
+      for (int a = 0; a < 4; ++a)
+        row_max = std::max(row_max, std::abs(gram[a][0]) + std::abs(gram[a][1]) + std::abs(gram[a][2]) + std::abs(gram[a][3]));
+      const double lam = cf * b.rho[l] * b.c[l] * b.v23[l] * row_max;
+      const double dte_hg = lam > 0.0 ? 0.25 * b.mass[l] / lam : b.dte[l];
+      if (dte_hg < b.dte[l]) {
+        const double k_spring = 0.25 * b.mass[l] / (b.dte[l] * b.dte[l]);
+        b.tmp[l] = dt > 0.0 ? std::max(k_spring, 2.0 * lam / dt) : 0.25 * b.mass[l] / (dte_hg * dte_hg);
+        b.dte[l] = dte_hg;
+      }
+    }
+  }
+
   // Scatter to the slots and write the state back (masked lanes: zero slots, state kept).
   for (std::size_t l = 0; l < n; ++l) {
     const std::size_t s0 = (e0 + l) * 8;
-    const double k_slot = b.ok[l] * 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]);
+    const double k_slot = b.ok[l] * (b.tmp[l] > 0.0 ? b.tmp[l] : 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]));
     const bool ok = b.ok[l] != 0.0;
     for (int i = 0; i < 8; ++i) {
       slot_force.x[s0 + i] = ok ? b.fx[i][l] : 0.0;
