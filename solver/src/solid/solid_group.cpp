@@ -4,6 +4,7 @@
 // scatter into slots. Formulas in solid_group.hpp and brick_geometry.hpp.
 #include "solid/solid_group.hpp"
 
+#include "core/parallel_loop.hpp"
 #include "solid/brick_geometry.hpp"
 #include "solid/lane_vector_ops.hpp"
 
@@ -800,14 +801,13 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
     else
       compute_tetra_chunk(0, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
   } else {
-#pragma omp parallel for schedule(static) if (nch >= 8)
-    for (std::size_t ch = 0; ch < nch; ++ch) {
+    parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
       ChunkSums& c = sums[ch];
       if (nodes_per_element == 8)
         compute_brick_chunk(ch, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
       else
         compute_tetra_chunk(ch, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
-    }
+    });
   }
   for (std::size_t ch = 0; ch < nch; ++ch) {
     const ChunkSums& c = sums[ch];
