@@ -583,7 +583,7 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   }
 
   // Density, wave speed, characteristic length V / largest face area and V^(2/3) (square
-  // and cube roots in loops of their own: the others then vectorise without -fno-math-errno).
+  // and cube roots as vector code, lane_vector_ops.hpp).
   for (std::size_t l = 0; l < n; ++l) {
     b.rho[l] = b.mass[l] / b.V[l];
     b.c[l] = M / b.rho[l];
@@ -592,8 +592,10 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   brick::sqrt_lanes(n, b.c);
   brick::sqrt_lanes(n, b.tmp);
   for (std::size_t l = 0; l < n; ++l) b.lc[l] = b.V[l] / (4.0 * b.tmp[l]);
-  if (hourglass != HourglassForm::Stiffness)
-    for (std::size_t l = 0; l < n; ++l) b.v23[l] = std::cbrt(b.V[l] * b.V[l]);
+  if (hourglass != HourglassForm::Stiffness) {
+    for (std::size_t l = 0; l < n; ++l) b.tmp[l] = b.V[l] * b.V[l];
+    brick::cbrt_lanes(n, b.tmp, b.v23);
+  }
 
   // Bulk viscosity (compression only): q = rho l (qa^2 l dv^2 - qb c dv), dv = tr D < 0.
   // Internal energy: trapezoidal stress power 0.5 ((s - q I)^{n-1} + (s - q I)^n):D V dt
