@@ -3,6 +3,8 @@
 // engine (see shell_element_group.hpp).
 #include "shells/shell_element_group.hpp"
 
+#include "core/parallel_loop.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,8 +68,7 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
   const std::size_t nch = chunk_totals_.size();
   const std::size_t npe = nodes_per_element;
   const bool quad = data.kind == ShellKind::QuadBT;
-#pragma omp parallel for schedule(static) if (nch > 1)
-  for (std::size_t ch = 0; ch < nch; ++ch) {
+  parallel_loop(nch, true, [&](std::size_t ch) {
     const std::size_t k0 = ch * kChunk, k1 = std::min(n_computed, k0 + kChunk);
     const std::span<const std::int32_t> list(computed_.data() + k0, k1 - k0);
     chunk_totals_[ch] = quad ? quad_bt_forces(data, nv, out, dt, list) : tria_dkt_forces(data, nv, out, dt, list);
@@ -82,7 +83,7 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
         slot_rot_stiffness[s] = kr;
       }
     }
-  }
+  });
   for (std::size_t ch = 0; ch < nch; ++ch) {
     const ShellKernelTotals& t = chunk_totals_[ch];
     energy.internal += t.de_int;

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace hbm::solver::brick {
 
@@ -34,12 +35,16 @@ inline constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
 // Lane form of volume_gradient for a batch of elements: arrays [node][lane] of width W,
 // lanes 0..n-1. Same face formula; each face is one loop over the lanes (vectorised).
 // amax2 receives the largest |a x c|^2 of the faces (face area = 4 sqrt(amax2)), so the
-// caller takes the square root only where it needs it.
+// caller takes the square root only where it needs it. The lane count n is a std::size_t
+// (partly filled batch) or a std::integral_constant (full batch: the compiler then sees a
+// fixed trip count, so the loops vectorise without remainder code and the small copies
+// and fills are inlined).
 namespace detail {
 // One face (nodes p1..p4, outward normal) of n elements: a = (s-derivative), c =
 // (t-derivative), b = twist; adds a x c -+ (a x b)/3 -+ (b x c)/3 to the face nodes' gradients
 // (s_a = (-1, 1, 1, -1), t_a = (-1, -1, 1, 1)) and keeps the largest |a x c|^2.
-inline void face_gradient_lanes(std::size_t n, const double* __restrict x1, const double* __restrict x2,
+template <class LaneCount>
+inline void face_gradient_lanes(LaneCount n, const double* __restrict x1, const double* __restrict x2,
                                 const double* __restrict x3, const double* __restrict x4,
                                 const double* __restrict y1, const double* __restrict y2,
                                 const double* __restrict y3, const double* __restrict y4,
@@ -82,8 +87,8 @@ inline void volume_gradient(const double* x, const double* y, const double* z, d
   double amax2 = 0.0;
   for (const auto& f : kFaces) {
     const int p1 = f[0], p2 = f[1], p3 = f[2], p4 = f[3];
-    detail::face_gradient_lanes(1, x + p1, x + p2, x + p3, x + p4, y + p1, y + p2, y + p3, y + p4, z + p1,
-                                z + p2, z + p3, z + p4, bx + p1, bx + p2, bx + p3, bx + p4, by + p1, by + p2,
+    detail::face_gradient_lanes(std::integral_constant<std::size_t, 1>{}, x + p1, x + p2, x + p3, x + p4,
+                                y + p1, y + p2, y + p3, y + p4, z + p1, z + p2, z + p3, z + p4, bx + p1, bx + p2, bx + p3, bx + p4, by + p1, by + p2,
                                 by + p3, by + p4, bz + p1, bz + p2, bz + p3, bz + p4, &amax2);
   }
   double v = 0.0;
@@ -92,8 +97,8 @@ inline void volume_gradient(const double* x, const double* y, const double* z, d
   max_face_area = 4.0 * std::sqrt(amax2);
 }
 
-template <std::size_t W>
-inline void volume_gradient_lanes(std::size_t n, const double (*x)[W], const double (*y)[W],
+template <std::size_t W, class LaneCount>
+inline void volume_gradient_lanes(LaneCount n, const double (*x)[W], const double (*y)[W],
                                   const double (*z)[W], double (*bx)[W], double (*by)[W],
                                   double (*bz)[W], double* __restrict volume,
                                   double* __restrict amax2) {

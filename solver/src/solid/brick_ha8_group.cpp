@@ -4,6 +4,7 @@
 // bulk viscosity, internal forces, element time step, scatter into slots.
 #include "solid/brick_ha8_group.hpp"
 
+#include "core/parallel_loop.hpp"
 #include "solid/brick_geometry.hpp"
 
 #include <algorithm>
@@ -334,9 +335,9 @@ void BrickHa8Group::compute_forces(const StepContext& step, const NodalState& no
   const std::size_t nch = n_chunks(n_elements);
   std::vector<double> e_int_c(nch, 0.0), dt_c(nch, std::numeric_limits<double>::infinity());
   std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
-#pragma omp parallel for schedule(static) if (nch >= 8)  // kSmallGroupChunks (cycle.cpp)
-  for (std::size_t ch = 0; ch < nch; ++ch)
+  parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
     compute_chunk(ch, step, nodes, e_int_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);
+  });
   for (std::size_t ch = 0; ch < nch; ++ch) {
     energy.internal += e_int_c[ch];
     if (dt_c[ch] < result.dt_min) {

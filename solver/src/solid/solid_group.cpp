@@ -4,11 +4,14 @@
 // scatter into slots. Formulas in solid_group.hpp and brick_geometry.hpp.
 #include "solid/solid_group.hpp"
 
+#include "core/parallel_loop.hpp"
 #include "solid/brick_geometry.hpp"
+#include "solid/lane_vector_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace hbm::solver {
 
@@ -406,17 +409,26 @@ void SolidGroup::compute_brick_chunk(std::size_t chunk, const StepContext& step,
                                      double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
                                      Index& inverted) {
   const std::size_t e_begin = chunk * kChunk, e_end = std::min(n_elements, e_begin + kChunk);
-  for (std::size_t e0 = e_begin; e0 < e_end; e0 += BrickLanes::W)
-    compute_brick_lanes(e0, std::min(BrickLanes::W, e_end - e0), step, nodes, e_int_inc, e_hg_inc, dt_min,
-                        dt_elem, inverted);
+  for (std::size_t e0 = e_begin; e0 < e_end; e0 += BrickLanes::W) {
+    const std::size_t n = std::min(BrickLanes::W, e_end - e0);
+    if (n == BrickLanes::W)
+      compute_brick_lanes(e0, std::integral_constant<std::size_t, BrickLanes::W>{}, step, nodes, e_int_inc,
+                          e_hg_inc, dt_min, dt_elem, inverted);
+    else
+      compute_brick_lanes(e0, n, step, nodes, e_int_inc, e_hg_inc, dt_min, dt_elem, inverted);
+  }
 }
 
 // Elements e0 .. e0+n-1 (n <= BrickLanes::W) as lanes: element e0 + l is lane l. Lanes of
 // deleted or inverted elements are computed like the others and masked on output (ok = 0:
 // state kept, zero slot force and stiffness), so no stage branches on the lane.
-void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepContext& step,
+// A full batch passes its lane count as a compile-time constant (the same arithmetic per
+// lane either way).
+template <class LaneCount>
+void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
                                      const NodalState& nodes, double& e_int_inc, double& e_hg_inc,
                                      double& dt_min, Index& dt_elem, Index& inverted) {
+  const std::size_t n = lane_count;
   static thread_local BrickLanes lanes;
   BrickLanes& b = lanes;
   const double dt = step.dt_prev;
@@ -443,19 +455,19 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
       }
       b.mv[l] = 0.0;
     }
-  for (int k = 0; k < 6; ++k) std::copy_n(sig[k].data() + e0, n, b.sig[k]);
+  for (int k = 0; k < 6; ++k) brick::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
   if (visco)
-    for (int k = 0; k < 6; ++k) std::copy_n(hist[k].data() + e0, n, b.hist[k]);
+    for (int k = 0; k < 6; ++k) brick::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
   else
     for (int k = 0; k < 6; ++k) std::fill_n(b.hist[k], n, 0.0);
-  for (int k = 0; k < 12; ++k) std::copy_n(hg[k].data() + e0, n, b.hg[k]);
+  for (int k = 0; k < 12; ++k) brick::copy_lanes(n, hg[k].data() + e0, b.hg[k]);
   if (hourglass == HourglassForm::Physical)
-    for (int k = 0; k < 12; ++k) std::copy_n(hg_visc[k].data() + e0, n, b.hgv[k]);
-  std::copy_n(mass.data() + e0, n, b.mass);
-  std::copy_n(q_bulk.data() + e0, n, b.q_old);
-  std::copy_n(e_int.data() + e0, n, b.e_int);
+    for (int k = 0; k < 12; ++k) brick::copy_lanes(n, hg_visc[k].data() + e0, b.hgv[k]);
+  brick::copy_lanes(n, mass.data() + e0, b.mass);
+  brick::copy_lanes(n, q_bulk.data() + e0, b.q_old);
+  brick::copy_lanes(n, e_int.data() + e0, b.e_int);
 
-  brick::volume_gradient_lanes(n, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
+  brick::volume_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
   for (std::size_t l = 0; l < n; ++l) {
     const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
     if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
@@ -476,7 +488,7 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
         b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
         b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
       }
-    brick::volume_gradient_lanes(n, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.amid2);
+    brick::volume_gradient_lanes(lane_count, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.amid2);
     for (int i = 0; i < 8; ++i)
       for (std::size_t l = 0; l < n; ++l) {
         const bool mid = b.Vm[l] > 0.0;
@@ -487,11 +499,11 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
     for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
   } else {
     for (int i = 0; i < 8; ++i) {
-      std::copy_n(b.bx[i], n, b.mx[i]);
-      std::copy_n(b.by[i], n, b.my[i]);
-      std::copy_n(b.bz[i], n, b.mz[i]);
+      brick::copy_lanes(n, b.bx[i], b.mx[i]);
+      brick::copy_lanes(n, b.by[i], b.my[i]);
+      brick::copy_lanes(n, b.bz[i], b.mz[i]);
     }
-    std::copy_n(b.V, n, b.Vm);
+    brick::copy_lanes(n, b.V, b.Vm);
   }
   for (int k = 0; k < 9; ++k) std::fill_n(b.L[k], n, 0.0);
   for (int i = 0; i < 8; ++i)
@@ -571,17 +583,19 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
   }
 
   // Density, wave speed, characteristic length V / largest face area and V^(2/3) (square
-  // and cube roots in loops of their own: the others then vectorise without -fno-math-errno).
+  // and cube roots as vector code, lane_vector_ops.hpp).
   for (std::size_t l = 0; l < n; ++l) {
     b.rho[l] = b.mass[l] / b.V[l];
     b.c[l] = M / b.rho[l];
   }
-  for (std::size_t l = 0; l < n; ++l) {
-    b.c[l] = std::sqrt(b.c[l]);
-    b.lc[l] = b.V[l] / (4.0 * std::sqrt(b.amax2[l]));
+  brick::copy_lanes(n, b.amax2, b.tmp);
+  brick::sqrt_lanes(n, b.c);
+  brick::sqrt_lanes(n, b.tmp);
+  for (std::size_t l = 0; l < n; ++l) b.lc[l] = b.V[l] / (4.0 * b.tmp[l]);
+  if (hourglass != HourglassForm::Stiffness) {
+    for (std::size_t l = 0; l < n; ++l) b.tmp[l] = b.V[l] * b.V[l];
+    brick::cbrt_lanes(n, b.tmp, b.v23);
   }
-  if (hourglass != HourglassForm::Stiffness)
-    for (std::size_t l = 0; l < n; ++l) b.v23[l] = std::cbrt(b.V[l] * b.V[l]);
 
   // Bulk viscosity (compression only): q = rho l (qa^2 l dv^2 - qb c dv), dv = tr D < 0.
   // Internal energy: trapezoidal stress power 0.5 ((s - q I)^{n-1} + (s - q I)^n):D V dt
@@ -704,11 +718,11 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
     b.dte[l] = 8.0 * (lambda * trT * trT + two_G * TT) / (b.rho[l] * trT);  // omega^2
     b.tmp[l] = b.qv[l] * b.qv[l] + b.c[l] * b.c[l];
   }
-  for (std::size_t l = 0; l < n; ++l) {
-    b.dte[l] = std::sqrt(b.dte[l]);
-    b.tmp[l] = std::sqrt(b.tmp[l]);
-  }
+  brick::sqrt_lanes(n, b.dte);
+  brick::sqrt_lanes(n, b.tmp);
   for (std::size_t l = 0; l < n; ++l) b.dte[l] = (2.0 * b.c[l] / b.dte[l]) / (b.qv[l] + b.tmp[l]);
+  // Slot stiffness 2 m_I / dt^2 (in tmp: a vectorised loop before the indexed scatter).
+  for (std::size_t l = 0; l < n; ++l) b.tmp[l] = b.ok[l] * 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]);
 
   // Hourglass viscosity limit. The viscous hourglass force -c sum_a gamma_a (gamma_a . v) is
   // a damper with matrix c sum_a gamma_a gamma_a^T, whose largest eigenvalue lambda is c times
@@ -719,30 +733,31 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
   // the dilatational one, so it does not bind; a brick sheared and warped far out of shape
   // reaches row sums ~ 10^3 (hub_oblique_9p5, flesh at the impactor rim, 16 ms), which
   // without this limit turned unstable at 1.5 us with no added mass (engine-design.md §12.3).
-  // Where it binds, the element step is 2 (m_e / 8) / lambda, and its nodal stiffness for
+  // Where it binds, the element step is 2 (m_e / 8) / lambda, and its slot stiffness for
   // mass scaling is the damper's equivalent at the present step, 2 lambda / dt: the nodal
   // step sqrt(2 m / k) then asks for m >= lambda dt / Tsca^2 (the damper needs lambda dt / 2),
   // linear in the step as a damper is, instead of the quadratic need of a spring.
-  // b.tmp: that nodal stiffness where the damper binds, else 0.
-  std::fill_n(b.tmp, n, 0.0);
   if (hourglass != HourglassForm::Stiffness) {
     const double cf = hourglass_coef * 0.25 * (hourglass == HourglassForm::Physical ? physical_coefficients().viscous : 1.0);
+    static constexpr int kPair[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
+    alignas(64) double gram[10][BrickLanes::W];
+    for (int p = 0; p < 10; ++p) {
+      const int a = kPair[p][0], c = kPair[p][1];
+      for (std::size_t l = 0; l < n; ++l) gram[p][l] = 0.0;
+      for (int i = 0; i < 8; ++i)
+        for (std::size_t l = 0; l < n; ++l) gram[p][l] += b.gam[a][i][l] * b.gam[c][i][l];
+    }
     for (std::size_t l = 0; l < n; ++l) {
-      double gram[4][4];
-      for (int a = 0; a < 4; ++a)
-        for (int c = a; c < 4; ++c) {
-          double s2 = 0.0;
-          for (int i = 0; i < 8; ++i) s2 += b.gam[a][i][l] * b.gam[c][i][l];
-          gram[a][c] = gram[c][a] = s2;
-        }
-      double row_max = 0.0;
-      for (int a = 0; a < 4; ++a)
-        row_max = std::max(row_max, std::abs(gram[a][0]) + std::abs(gram[a][1]) + std::abs(gram[a][2]) + std::abs(gram[a][3]));
+      const double g00 = gram[0][l], g01 = std::abs(gram[1][l]), g02 = std::abs(gram[2][l]), g03 = std::abs(gram[3][l]);
+      const double g11 = gram[4][l], g12 = std::abs(gram[5][l]), g13 = std::abs(gram[6][l]);
+      const double g22 = gram[7][l], g23 = std::abs(gram[8][l]), g33 = gram[9][l];
+      const double row_max = std::max(std::max(g00 + g01 + g02 + g03, g01 + g11 + g12 + g13),
+                                      std::max(g02 + g12 + g22 + g23, g03 + g13 + g23 + g33));
       const double lam = cf * b.rho[l] * b.c[l] * b.v23[l] * row_max;
       const double dte_hg = lam > 0.0 ? 0.25 * b.mass[l] / lam : b.dte[l];
       if (dte_hg < b.dte[l]) {
         const double k_spring = 0.25 * b.mass[l] / (b.dte[l] * b.dte[l]);
-        b.tmp[l] = dt > 0.0 ? std::max(k_spring, 2.0 * lam / dt) : 0.25 * b.mass[l] / (dte_hg * dte_hg);
+        b.tmp[l] = b.ok[l] * (dt > 0.0 ? std::max(k_spring, 2.0 * lam / dt) : 0.25 * b.mass[l] / (dte_hg * dte_hg));
         b.dte[l] = dte_hg;
       }
     }
@@ -751,7 +766,7 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
   // Scatter to the slots and write the state back (masked lanes: zero slots, state kept).
   for (std::size_t l = 0; l < n; ++l) {
     const std::size_t s0 = (e0 + l) * 8;
-    const double k_slot = b.ok[l] * (b.tmp[l] > 0.0 ? b.tmp[l] : 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]));
+    const double k_slot = b.tmp[l];
     const bool ok = b.ok[l] != 0.0;
     for (int i = 0; i < 8; ++i) {
       slot_force.x[s0 + i] = ok ? b.fx[i][l] : 0.0;
@@ -787,17 +802,24 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, std::size_t n, const StepCo
       }
       frozen_geometry.frozen[e] = 1;
     }
-  // Reductions in element order (the same sums whatever the thread count).
+  // Reductions in element order (the same sums whatever the thread count), in locals: the
+  // reference arguments would be stored on every lane.
+  double sum_int = e_int_inc, sum_hg = e_hg_inc, step_min = dt_min;
+  Index step_elem = dt_elem;
   for (std::size_t l = 0; l < n; ++l) {
     if (b.ok[l] == 0.0) continue;
-    e_int_inc += b.de[l];
-    e_int_inc += b.p_int[l];
-    e_hg_inc += b.p_hg[l];
-    if (b.dte[l] < dt_min) {
-      dt_min = b.dte[l];
-      dt_elem = static_cast<Index>(e0 + l);
+    sum_int += b.de[l];
+    sum_int += b.p_int[l];
+    sum_hg += b.p_hg[l];
+    if (b.dte[l] < step_min) {
+      step_min = b.dte[l];
+      step_elem = static_cast<Index>(e0 + l);
     }
   }
+  e_int_inc = sum_int;
+  e_hg_inc = sum_hg;
+  dt_min = step_min;
+  dt_elem = step_elem;
 }
 
 void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes,
@@ -820,14 +842,13 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
     else
       compute_tetra_chunk(0, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
   } else {
-#pragma omp parallel for schedule(static) if (nch >= 8)
-    for (std::size_t ch = 0; ch < nch; ++ch) {
+    parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
       ChunkSums& c = sums[ch];
       if (nodes_per_element == 8)
         compute_brick_chunk(ch, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
       else
         compute_tetra_chunk(ch, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
-    }
+    });
   }
   for (std::size_t ch = 0; ch < nch; ++ch) {
     const ChunkSums& c = sums[ch];

@@ -78,7 +78,10 @@ class SolidGroup final : public ElementGroup {
   void compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                            double& e_int_inc, double& e_hg_inc, double& dt_min, Index& dt_elem,
                            Index& inverted);
-  void compute_brick_lanes(std::size_t e0, std::size_t n, const StepContext& step,
+  // Lanes e0 .. e0+n-1; LaneCount is std::size_t (partly filled batch) or a
+  // std::integral_constant (full batch: fixed trip counts, no remainder loops).
+  template <class LaneCount>
+  void compute_brick_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
                            const NodalState& nodes, double& e_int_inc, double& e_hg_inc,
                            double& dt_min, Index& dt_elem, Index& inverted);
   // 4-node tetrahedra: one chunk element by element.
