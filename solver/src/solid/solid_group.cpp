@@ -739,27 +739,26 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   // linear in the step as a damper is, instead of the quadratic need of a spring.
   if (hourglass != HourglassForm::Stiffness) {
     const double cf = hourglass_coef * 0.25 * (hourglass == HourglassForm::Physical ? physical_coefficients().viscous : 1.0);
-    static constexpr int kPair[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
-    alignas(64) double gram[10][BrickLanes::W];
-    for (int p = 0; p < 10; ++p) {
-      const int a = kPair[p][0], c = kPair[p][1];
-      for (std::size_t l = 0; l < n; ++l) gram[p][l] = 0.0;
-      for (int i = 0; i < 8; ++i)
-        for (std::size_t l = 0; l < n; ++l) gram[p][l] += b.gam[a][i][l] * b.gam[c][i][l];
-    }
     for (std::size_t l = 0; l < n; ++l) {
-      const double g00 = gram[0][l], g01 = std::abs(gram[1][l]), g02 = std::abs(gram[2][l]), g03 = std::abs(gram[3][l]);
-      const double g11 = gram[4][l], g12 = std::abs(gram[5][l]), g13 = std::abs(gram[6][l]);
-      const double g22 = gram[7][l], g23 = std::abs(gram[8][l]), g33 = gram[9][l];
+      double g00 = 0, g01 = 0, g02 = 0, g03 = 0, g11 = 0, g12 = 0, g13 = 0, g22 = 0, g23 = 0, g33 = 0;
+#pragma GCC unroll 8
+      for (int i = 0; i < 8; ++i) {
+        const double a0 = b.gam[0][i][l], a1 = b.gam[1][i][l], a2 = b.gam[2][i][l], a3 = b.gam[3][i][l];
+        g00 += a0 * a0; g01 += a0 * a1; g02 += a0 * a2; g03 += a0 * a3;
+        g11 += a1 * a1; g12 += a1 * a2; g13 += a1 * a3;
+        g22 += a2 * a2; g23 += a2 * a3; g33 += a3 * a3;
+      }
+      g01 = std::abs(g01); g02 = std::abs(g02); g03 = std::abs(g03);
+      g12 = std::abs(g12); g13 = std::abs(g13); g23 = std::abs(g23);
       const double row_max = std::max(std::max(g00 + g01 + g02 + g03, g01 + g11 + g12 + g13),
                                       std::max(g02 + g12 + g22 + g23, g03 + g13 + g23 + g33));
       const double lam = cf * b.rho[l] * b.c[l] * b.v23[l] * row_max;
-      const double dte_hg = lam > 0.0 ? 0.25 * b.mass[l] / lam : b.dte[l];
-      if (dte_hg < b.dte[l]) {
-        const double k_spring = 0.25 * b.mass[l] / (b.dte[l] * b.dte[l]);
-        b.tmp[l] = b.ok[l] * (dt > 0.0 ? std::max(k_spring, 2.0 * lam / dt) : 0.25 * b.mass[l] / (dte_hg * dte_hg));
-        b.dte[l] = dte_hg;
-      }
+      const double dte_hg = 0.25 * b.mass[l] / lam;  // +inf (no binding) when lam = 0
+      const double k_spring = 0.25 * b.mass[l] / (b.dte[l] * b.dte[l]);
+      const double k_damper = dt > 0.0 ? std::max(k_spring, 2.0 * lam / dt) : 0.25 * b.mass[l] / (dte_hg * dte_hg);
+      const bool binds = dte_hg < b.dte[l];
+      b.tmp[l] = binds && b.ok[l] != 0.0 ? k_damper : b.tmp[l];
+      b.dte[l] = binds ? dte_hg : b.dte[l];
     }
   }
 

@@ -2,6 +2,8 @@
 // /PROP/TYPE4 axial spring kernel (see spring_axial_group.hpp).
 #include "springs/spring_axial_group.hpp"
 
+#include "core/parallel_loop.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,8 +30,7 @@ void SpringAxialGroup::compute_forces(const StepContext& step, const NodalState&
   std::vector<double>& chunk_dt = scratch.dt;
   std::vector<Index>& chunk_el = scratch.el;
   std::vector<std::uint8_t>& chunk_broke = scratch.broke;
-#pragma omp parallel for schedule(static) if (nc > 1)
-  for (std::size_t c = 0; c < nc; ++c) {
+  parallel_loop(nc, nc > 1, [&](std::size_t c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);
     for (std::size_t e = c * kChunk; e < end; ++e) {
       const std::size_t s1 = 2 * e, s2 = 2 * e + 1;
@@ -53,7 +54,7 @@ void SpringAxialGroup::compute_forces(const StepContext& step, const NodalState&
       slot_force.x[s2] = -fe.x(); slot_force.y[s2] = -fe.y(); slot_force.z[s2] = -fe.z();
       element_stiffness(e, nodes, 0.0, chunk_dt[c], chunk_el[c]);
     }
-  }
+  });
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 

@@ -2,6 +2,8 @@
 // /PROP/TYPE13 beam-type spring kernel (corotational, see spring_beam_group.hpp).
 #include "springs/spring_beam_group.hpp"
 
+#include "core/parallel_loop.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -66,8 +68,7 @@ void SpringBeamGroup::compute_forces(const StepContext& step, const NodalState& 
   std::vector<double>& chunk_dt = scratch.dt;
   std::vector<Index>& chunk_el = scratch.el;
   std::vector<std::uint8_t>& chunk_broke = scratch.broke;
-#pragma omp parallel for schedule(static) if (nc > 1)
-  for (std::size_t c = 0; c < nc; ++c) {
+  parallel_loop(nc, nc > 1, [&](std::size_t c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);
     for (std::size_t e = c * kChunk; e < end; ++e) {
       const std::size_t s1 = 2 * e, s2 = 2 * e + 1;
@@ -115,7 +116,7 @@ void SpringBeamGroup::compute_forces(const StepContext& step, const NodalState& 
       const double l = r.norm();
       element_stiffness(e, nodes, 0.25 * k_trans * law_scale[e] * l * l, chunk_dt[c], chunk_el[c]);
     }
-  }
+  });
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 

@@ -2,6 +2,8 @@
 // /PROP/TYPE8 general spring kernel (see spring_general_group.hpp).
 #include "springs/spring_general_group.hpp"
 
+#include "core/parallel_loop.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -17,8 +19,7 @@ void SpringGeneralGroup::compute_forces(const StepContext& step, const NodalStat
   std::vector<Index>& chunk_el = scratch.el;
   std::vector<std::uint8_t>& chunk_broke = scratch.broke;
   if (rotation.size() != n_elements) rotation.assign(n_elements, Eigen::Vector3d::Zero());
-#pragma omp parallel for schedule(static) if (nc > 1)
-  for (std::size_t c = 0; c < nc; ++c) {
+  parallel_loop(nc, nc > 1, [&](std::size_t c) {
     const std::size_t end = std::min(n_elements, (c + 1) * kChunk);
     for (std::size_t e = c * kChunk; e < end; ++e) {
       const std::size_t s1 = 2 * e, s2 = 2 * e + 1;
@@ -63,7 +64,7 @@ void SpringGeneralGroup::compute_forces(const StepContext& step, const NodalStat
       }
       element_stiffness(e, nodes, 0.0, chunk_dt[c], chunk_el[c]);
     }
-  }
+  });
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 
