@@ -58,6 +58,10 @@ TEST(SmallStrainSwitchDeck, CrushedBrickRunsToTheEnd) {
   const double t_end = th.rows.back()[t];
   EXPECT_GE(t_end, 0.15);
   EXPECT_NEAR(th.rows.back()[dz], -10.0 * t_end, 1e-6) << "the top face went 0.5 mm below the fixed bottom face";
+  const std::string listing =
+      hbm::solver::testing::read_text(starter.parent_path() / "out" / "inverted_element_0001.out");
+  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN\n  /BRICK part 1 'cube': 1 of 1\n"), std::string::npos)
+      << listing;
 }
 
 TEST(SmallStrainSwitchDeck, WithoutTheSwitchTheSlowCrushInverts) {

@@ -76,6 +76,16 @@ void add_engine(std::vector<KeywordSpec>& out) {
     out.push_back(std::move(k));
   }
   {
+    KeywordSpec k = card("/DT/SHELL/CST", IdKind::Optional,
+                         "A 4-node shell whose time step Tsca dt_crit falls below Tmin switches to the small strain "
+                         "formulation (in-plane shape and step kept from the switch on; 3-node shells do not switch).");
+    k.lines.push_back(line("line 1", {
+        real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
+        real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
+    }));
+    out.push_back(std::move(k));
+  }
+  {
     KeywordSpec k = card("/STOP", IdKind::None, "Stop criteria on energy error and added mass.");
     k.lines.push_back(line("line 1", {
         real_field("Emax", 0, Dimension::None, kNonNegative, 0, "maximum energy error ratio (0 = none)"),

@@ -339,6 +339,20 @@ RunResult run_model(Model& model, const RunOptions& opt) {
                                      : std::string(b));
     }
   }
+  // Elements switched to small strain (/DT/BRICK/CST, /DT/SHELL/CST): their geometry is
+  // frozen from the switch on, so the user needs to know where.
+  {
+    bool header = false;
+    for (const auto& gp : model.groups) {
+      const std::size_t n = gp->n_small_strain();
+      if (n == 0) continue;
+      if (!header) listing.line("ELEMENTS SWITCHED TO SMALL STRAIN");
+      header = true;
+      const Part& p = model.parts[static_cast<std::size_t>(gp->part)];
+      listing.line("  " + gp->keyword + " part " + std::to_string(p.id) + " '" + p.title + "': " + std::to_string(n) +
+                   " of " + std::to_string(gp->n_elements));
+    }
+  }
   listing.line("");
   res.reason = c.stop;
   res.energies = c.energies;

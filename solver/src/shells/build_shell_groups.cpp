@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 
 namespace hbm::solver {
 
@@ -186,7 +187,24 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
 
 }  // namespace
 
+// /DT/SHELL/CST of the engine deck (the last one counts, as for /DT/NODA/CST): Tsca, Tmin.
+// Returns Tmin 0 when absent. 3-node shells keep the large strain formulation: said, not
+// done silently.
+static std::pair<double, double> read_shell_small_strain_switch(BuildContext& ctx) {
+  double tsca = 0.9, tmin = 0.0;
+  const auto cards = ctx.engine().cards_of("/DT/SHELL/CST");
+  if (!cards.empty() && !ctx.starter().cards_of("/SH3N").empty())
+    ctx.warning(*cards.back(), "/SH3N elements do not switch to small strain (4-node shells only)");
+  for (const hbm::deck::Card* c : cards) {
+    tsca = c->real(0, "Tsca");
+    tmin = c->real(0, "Tmin");
+    if (!(tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", "must be > 0 for /DT/SHELL/CST");
+  }
+  return {tsca, tmin};
+}
+
 void build_shell_groups(BuildContext& ctx) {
+  const auto [cst_tsca, cst_tmin] = read_shell_small_strain_switch(ctx);
   for (std::string_view kw : {"/SHELL", "/SH3N"}) {
     ctx.claim(kw);
     const bool tria = kw == "/SH3N";
@@ -236,6 +254,7 @@ void build_shell_groups(BuildContext& ctx) {
         }
       if (!ok) continue;
       g->n_elements = g->element_id.size();
+      if (!tria && cst_tmin > 0) g->data.enable_small_strain_switch(cst_tsca, cst_tmin);
       const Index bad = g->initialize(ctx.nodes());
       if (bad != kNoIndex) {
         ctx.error(*cards.front(), cat("shell element ", num(g->element_id[static_cast<std::size_t>(bad)]),

@@ -127,6 +127,34 @@ void local_geometry(QuadLanes& b, std::size_t n) {
     }
 }
 
+// /DT/SHELL/CST: switched lanes take the in-plane shape frozen at the switch (local x, y,
+// area) in the current corotational frame; the frame keeps the orientation of the last
+// evaluation (a quad squeezed flat would otherwise flip its normal r31 x r42 and see its
+// frozen shape mirrored). Layout of frozen_shape per element: x[4], y[4], A, dt, n[3].
+constexpr std::size_t kFrozenStride = ShellGroupData::kFrozenShapeStride;
+
+void use_frozen_shape(QuadLanes& b, std::size_t n, ShellGroupData& g, const std::int32_t* idx) {
+  if (g.frozen.empty()) return;
+  for (std::size_t l = 0; l < n; ++l) {
+    const auto e = static_cast<std::size_t>(idx[l]);
+    if (!g.frozen[e]) continue;
+    double* f = &g.frozen_shape[e * kFrozenStride];
+    if (b.e3[0][l] * f[10] + b.e3[1][l] * f[11] + b.e3[2][l] * f[12] < 0.0) {
+      for (int c = 0; c < 3; ++c) {
+        b.e3[c][l] = -b.e3[c][l];
+        b.e2[c][l] = -b.e2[c][l];
+      }
+      for (int i = 0; i < 4; ++i) b.zw[i][l] = -b.zw[i][l];
+    }
+    for (int c = 0; c < 3; ++c) f[10 + c] = b.e3[c][l];
+    for (int i = 0; i < 4; ++i) {
+      b.x[i][l] = f[i];
+      b.y[i][l] = f[4 + i];
+    }
+    b.A[l] = f[8];
+  }
+}
+
 }  // namespace
 
 ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
@@ -162,6 +190,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     gather_spins<4>(b, n, nv);
     // Frame, local coordinates and area on the mid-step geometry; rates.
     local_geometry(b, n);
+    use_frozen_shape(b, n, g, idx);
     for (std::size_t l = 0; l < n; ++l) {
       const double e1x = b.e1[0][l], e1y = b.e1[1][l], e1z = b.e1[2][l];
       const double e2x = b.e2[0][l], e2y = b.e2[1][l], e2z = b.e2[2][l];
@@ -267,6 +296,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
         b.Z[i][l] += hdt * b.VZ[i][l];
       }
     local_geometry(b, n);
+    use_frozen_shape(b, n, g, idx);
     for (std::size_t l = 0; l < n; ++l) {
       const bool good = b.ok[l] != 0.0 && b.A[l] > 0.0;
       b.okf[l] = good ? 1.0 : 0.0;
@@ -335,6 +365,9 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
+    if (!g.frozen.empty())
+      for (std::size_t l = 0; l < n; ++l)
+        if (g.frozen[static_cast<std::size_t>(idx[l])]) b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * kFrozenStride + 9];
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
@@ -360,6 +393,17 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
       if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
       g.area[e] = b.A[l];
       g.dt_elem[e] = b.dte[l];
+      if (!g.frozen.empty() && !g.frozen[e] && g.cst_tsca * b.dte[l] < g.cst_tmin) {
+        double* f = &g.frozen_shape[e * kFrozenStride];
+        for (int i = 0; i < 4; ++i) {
+          f[i] = b.x[i][l];
+          f[4 + i] = b.y[i][l];
+        }
+        f[8] = b.A[l];
+        f[9] = b.dte[l];
+        for (int c = 0; c < 3; ++c) f[10 + c] = b.e3[c][l];
+        g.frozen[e] = 1;
+      }
       if (b.dte[l] < tot.dt_min) {
         tot.dt_min = b.dte[l];
         tot.dt_element = static_cast<std::int64_t>(e);

@@ -46,6 +46,7 @@ class BrickHa8Group final : public ElementGroup {
   // /DT/BRICK/CST (set before initialize, which sizes the frozen geometry).
   SmallStrainSwitch small_strain;
   FrozenBrickGeometry frozen_geometry;
+  std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
   // Size the arrays (after n_elements / connectivity) and compute V0 and mass. Returns
   // the first element with a non-positive Jacobian at a Gauss point, or kNoIndex.

@@ -58,6 +58,7 @@ class SolidGroup final : public ElementGroup {
   // /DT/BRICK/CST (8-node bricks; set before initialize, which sizes the frozen geometry).
   SmallStrainSwitch small_strain;
   FrozenBrickGeometry frozen_geometry;
+  std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
   // compute V0 and mass from the current nodal positions. Returns the local index of

@@ -124,6 +124,10 @@ class ElementGroup : public ThSource {
 
   // Fill one value per element for an animation field; default 0 (Eroded from `alive`).
   virtual void cell_field(CellField field, std::span<double> out) const;
+
+  // Elements switched to the small strain formulation so far (/DT/BRICK/CST,
+  // /DT/SHELL/CST); the listing names the parts that have any. Default: none.
+  virtual std::size_t n_small_strain() const { return 0; }
 };
 
 }  // namespace hbm::solver

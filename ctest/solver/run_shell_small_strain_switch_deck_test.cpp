@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// /DT/SHELL/CST in an engine deck, end to end with hbm-solver on
+// decks/examples/shell_fold_small_strain (one 37 x 6.5 mm soft quad, three corners fixed,
+// corner 3 driven across edge 1-2 at 10 mm/ms):
+//  - without the switch the nodal mass scaling chases the collapsing step and the run stops
+//    on added mass (exit code 3);
+//  - with /DT/SHELL/CST (Tsca 0.9, Tmin 1.5 us) the quad switches where
+//    0.9 A / l_max / c = Tmin, an instant fixed by its geometry, from then on the added mass
+//    stays constant, the run ends normally with the energy balance closed, and the
+//    listing names the part with the switched element;
+//  - Tmin 0 is a deck error naming the engine file, the keyword and the field, exit code 1;
+//  - on a deck with 3-node shells (which keep the large strain formulation) the run says so.
+#include "example_deck_runner.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace t = hbm::solver::testing;
+
+// Copies shell_fold_small_strain into ./<tag>/ with `cst` appended to the engine deck;
+// returns the starter path.
+fs::path deck_with(const std::string& tag, const std::string& cst) {
+  const fs::path src = t::example_deck("shell_fold_small_strain").parent_path();
+  const fs::path dir = fs::current_path() / ("shell_cst_" + tag + t::per_process_suffix());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(src / "shell_fold_small_strain_0000.rad", dir / "shell_fold_small_strain_0000.rad");
+  std::ofstream(dir / "shell_fold_small_strain_0001.rad")
+      << t::read_text(src / "shell_fold_small_strain_0001.rad") << cst;
+  return dir / "shell_fold_small_strain_0000.rad";
+}
+
+// Time at which the quad's step reaches Tmin / Tsca: side 3-4 is the longest,
+// l = sqrt(37^2 + s^2), A = 37 (13 - s) / 2 with s = v t, c = sqrt(E / (rho (1 - nu^2))).
+double switch_time(double tsca, double tmin) {
+  const double c = std::sqrt(1e-3 / (1e-6 * (1 - 0.3 * 0.3))), v = 10.0;
+  double lo = 0, hi = 1.3;  // the step falls monotonically to 0 at t = 1.3 ms
+  for (int it = 0; it < 200; ++it) {
+    const double tm = 0.5 * (lo + hi), s = v * tm;
+    const double dt = 37 * (13 - s) / 2 / std::sqrt(37.0 * 37.0 + s * s) / c;
+    (tsca * dt > tmin ? lo : hi) = tm;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+TEST(ShellSmallStrainSwitchDeck, FoldedQuadRunsToTheEndWithConstantAddedMass) {
+  const fs::path starter = deck_with("on", "/DT/SHELL/CST\n0.9 1.5E-3\n");
+  std::string out;
+  ASSERT_EQ(t::run_solver(starter, out), 0) << out;
+  const auto th = t::read_th(starter.parent_path() / "out" / "shell_fold_small_strain_TH_NODE_1.csv");
+  ASSERT_FALSE(th.rows.empty());
+  const std::size_t ct = th.col("time"), cr = th.col("mass ratio"), ce = th.col("energy error"),
+                    cdy = th.col("node 3 driven DY");
+  const auto& last = th.rows.back();
+  EXPECT_NEAR(last[ct], 1.5, 1e-9);
+  EXPECT_NEAR(last[cdy], -15.0, 1e-9) << "corner 3 driven 2 mm past edge 1-2";
+  EXPECT_GT(last[cr], 0.0);
+  EXPECT_LT(last[cr], 0.1);
+  // First output at which the added mass has its final value: the switch, one output
+  // interval (15 us) after the instant the geometry fixes at the latest.
+  double t_const = -1;
+  for (const auto& row : th.rows)
+    if (std::abs(row[cr] - last[cr]) <= 1e-12 * last[cr]) {
+      t_const = row[ct];
+      break;
+    }
+  const double ts = switch_time(0.9, 1.5e-3);
+  EXPECT_GT(ts, 1.28);
+  EXPECT_GE(t_const, ts - 1e-9);
+  EXPECT_LE(t_const, ts + 0.015 + 1e-9);
+  // Energy balance: within 0.5 % through the cycles around the switch (forces ~1/A change
+  // steeply from one cycle to the next), closed at the end (the frozen sliver stores what
+  // the driven corner puts in).
+  for (const auto& row : th.rows) EXPECT_LT(std::abs(row[ce]), 5e-3) << "t = " << row[ct];
+  EXPECT_LT(std::abs(last[ce]), 1e-4);
+  const std::string listing = t::read_text(starter.parent_path() / "out" / "shell_fold_small_strain_0001.out");
+  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN\n  /SHELL part 1 'skin': 1 of 1\n"), std::string::npos)
+      << listing;
+}
+
+TEST(ShellSmallStrainSwitchDeck, WithoutTheSwitchTheAddedMassStopsTheRun) {
+  std::string out;
+  EXPECT_EQ(t::run_solver(deck_with("off", ""), out), 3) << out;
+  EXPECT_NE(out.find("exceeds DMmax"), std::string::npos) << out;
+  EXPECT_NE(out.find("part 1 'skin'"), std::string::npos) << out;
+}
+
+TEST(ShellSmallStrainSwitchDeck, TminZeroIsAnError) {
+  std::string out;
+  EXPECT_EQ(t::run_solver(deck_with("tmin0", "/DT/SHELL/CST\n0.9 0\n"), out), 1);
+  EXPECT_NE(out.find("shell_fold_small_strain_0001.rad:"), std::string::npos) << out;
+  EXPECT_NE(out.find("/DT/SHELL/CST"), std::string::npos) << out;
+  EXPECT_NE(out.find("Tmin"), std::string::npos) << out;
+}
+
+TEST(ShellSmallStrainSwitchDeck, TrianglesAreNamedAsNotSwitching) {
+  const fs::path src = t::example_deck("shell_pull_failure_tria").parent_path();
+  const fs::path dir = fs::current_path() / ("shell_cst_tria" + t::per_process_suffix());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(src / "shell_pull_failure_tria_0000.rad", dir / "shell_pull_failure_tria_0000.rad");
+  std::ofstream(dir / "shell_pull_failure_tria_0001.rad")
+      << t::read_text(src / "shell_pull_failure_tria_0001.rad") << "/DT/SHELL/CST\n0.9 1e-9\n";
+  std::string out;
+  EXPECT_EQ(t::run_solver(dir / "shell_pull_failure_tria_0000.rad", out), 0) << out;
+  EXPECT_NE(out.find("shell_pull_failure_tria_0001.rad:"), std::string::npos) << out;
+  EXPECT_NE(out.find("/SH3N elements do not switch"), std::string::npos) << out;
+}
