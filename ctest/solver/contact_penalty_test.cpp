@@ -324,6 +324,30 @@ TEST(ContactPenalty, ShellLawStiffensTowardsMidSurface) {
   const double dU = (PenaltyContact::law_energy(p + h, g, kp, kmax, false) -
                      PenaltyContact::law_energy(p - h, g, kp, kmax, false)) / (2 * h);
   EXPECT_NEAR(dU, PenaltyContact::law_force(p, g, kp, kmax, false), 1e-6);
-  // Capped branch: F = kmax p beyond p* = g (1 - kp/kmax).
-  EXPECT_NEAR(PenaltyContact::law_force(0.45, g, kp, 10.0, false), 10.0 * 0.45, 1e-12);
+  // Tangent-capped branch: beyond pt = g (1 - sqrt(kp/kmax)), where dF/dp = kp g^2/(g-p)^2
+  // reaches kmax, F goes on with slope kmax: F(p) = F(pt) + kmax (p - pt).
+  const double km = 10.0, pt = g * (1 - std::sqrt(kp / km));
+  EXPECT_NEAR(PenaltyContact::law_tangent_limit(g, kp, km), pt, 1e-15);
+  const double f_pt = kp * g * pt / (g - pt);
+  EXPECT_NEAR(PenaltyContact::law_force(0.45, g, kp, km, false), f_pt + km * (0.45 - pt), 1e-12);
+  for (double q : {0.1, pt - 1e-4, pt + 1e-4, 0.45, 0.6}) {  // 0.6: past the mid-surface
+    const double dF = (PenaltyContact::law_force(q + h, g, kp, km, false) -
+                       PenaltyContact::law_force(q - h, g, kp, km, false)) / (2 * h);
+    EXPECT_NEAR(PenaltyContact::law_stiffness(q, g, kp, km, false), dF, 1e-5 * km) << "p = " << q;
+    EXPECT_LE(dF, km * (1 + 1e-6)) << "p = " << q;
+    const double dUq = (PenaltyContact::law_energy(q + h, g, kp, km, false) -
+                        PenaltyContact::law_energy(q - h, g, kp, km, false)) / (2 * h);
+    EXPECT_NEAR(dUq, PenaltyContact::law_force(q, g, kp, km, false), 1e-6) << "p = " << q;
+  }
+}
+
+TEST(ContactPenalty, SoftShellContactAtTheMidSurfaceStaysBounded) {
+  // The clavicle-skin contact of the body model: kp 5e-4 kN/mm, kmax 271 kN/mm (fixed-step
+  // cap of a 0.75 g node), gap 1 mm. A node at the mid-surface (p = g) feels
+  // F(pt) + kmax (g - pt) < 2 g sqrt(kp kmax) (0.74 kN), not kmax g (271 kN).
+  const double kp = 5e-4, kmax = 271.2, g = 1.0;
+  const double f = PenaltyContact::law_force(g, g, kp, kmax, false);
+  EXPECT_GT(f, g * std::sqrt(kp * kmax));
+  EXPECT_LT(f, 2 * g * std::sqrt(kp * kmax));
+  EXPECT_EQ(PenaltyContact::law_stiffness(g, g, kp, kmax, false), kmax);
 }

@@ -47,23 +47,43 @@ double combine(int istf, double km, double ks) {
 
 }  // namespace
 
+// Shell law K(p) = kp g/(g-p) (F = K p) up to the penetration pt where its tangent
+// stiffness dF/dp = kp g^2/(g-p)^2 reaches kmax, pt = g (1 - sqrt(kp/kmax)); beyond pt
+// the force goes on linearly with slope kmax. Capping the tangent (not the secant K) keeps
+// every increment of force within what the node's fixed step carries: with the secant
+// capped, F = kp g p/(g-p) rose with a slope up to kmax^2/kp just before the cap, so a
+// node of a soft contact (kp 5e-4 kN/mm against kmax 270 kN/mm) reaching the last
+// micrometres before a shell's mid-surface took 131 kN in one cycle (docs/engine-design.md
+// section 12.5). Radioss' law is the same below pt.
+double PenaltyContact::law_tangent_limit(double g, double kp, double kmax) {
+  return kmax > kp ? g * (1.0 - std::sqrt(kp / kmax)) : 0.0;
+}
+
 double PenaltyContact::law_force(double p, double g, double kp, double kmax, bool linear) {
   if (p <= 0) return 0;
   if (linear || g <= 0) return std::min(kp, kmax) * p;
-  // K(p) = kp g/(g-p) reaches kmax at p* = g (1 - kp/kmax).
-  const double ps = kmax > kp ? g * (1 - kp / kmax) : 0.0;
-  if (p < ps) return kp * g * p / (g - p);
-  return kmax * p;
+  const double pt = law_tangent_limit(g, kp, kmax);
+  if (p < pt) return kp * g * p / (g - p);
+  const double ft = pt > 0 ? kp * g * pt / (g - pt) : 0.0;
+  return ft + kmax * (p - pt);
+}
+
+double PenaltyContact::law_stiffness(double p, double g, double kp, double kmax, bool linear) {
+  if (linear || g <= 0) return std::min(kp, kmax);
+  const double pt = law_tangent_limit(g, kp, kmax);
+  if (p < pt) return kp * g * g / ((g - std::max(p, 0.0)) * (g - std::max(p, 0.0)));
+  return kmax;
 }
 
 double PenaltyContact::law_energy(double p, double g, double kp, double kmax, bool linear) {
   if (p <= 0) return 0;
   if (linear || g <= 0) return 0.5 * std::min(kp, kmax) * p * p;
-  const double ps = kmax > kp ? g * (1 - kp / kmax) : 0.0;
-  // U(p) = kp g (-p - g ln(1 - p/g)) below p*, then the linear branch F = kmax p.
+  const double pt = law_tangent_limit(g, kp, kmax);
+  // U(p) = kp g (-p - g ln(1 - p/g)) below pt, then the linear branch.
   auto u = [&](double q) { return kp * g * (-q - g * std::log1p(-q / g)); };
-  if (p < ps) return u(p);
-  return u(ps) + 0.5 * kmax * (p * p - ps * ps);
+  if (p < pt) return u(p);
+  const double ft = pt > 0 ? kp * g * pt / (g - pt) : 0.0;
+  return u(pt) + ft * (p - pt) + 0.5 * kmax * (p - pt) * (p - pt);
 }
 
 PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary,
@@ -363,7 +383,8 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     const bool linear = surf_.one_sided[su] != 0;
     const double fn_el = law_force(best_pen, best_gap, kp, kmax, linear);
     elastic_energy_ += law_energy(best_pen, best_gap, kp, kmax, linear);
-    const double k_now = best_pen > 0 ? fn_el / best_pen : kp;
+    // Tangent stiffness of the law: the nodal step, damping and friction spring see it.
+    const double k_now = law_stiffness(best_pen, best_gap, kp, kmax, linear);
 
     // Relative velocity of the node and the contact point.
     V3 vm{};

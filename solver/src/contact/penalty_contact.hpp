@@ -6,7 +6,8 @@
 // penetration p = gap - d is found (d: distance to the closest point; signed along the
 // outward normal for solid faces, which lets a node that went past the face still be
 // pushed out, down to `depth`). Normal force (Radioss TYPE7 law, stiffness rising as the
-// node approaches a shell mid-surface): K(p) = Kp g / (g - p), capped at Kmax, F = K p;
+// node approaches a shell mid-surface): K(p) = Kp g / (g - p), F = K p, until the tangent
+// dF/dp reaches Kmax, then linear with slope Kmax;
 // solid faces use the linear law F = Kp p. Kp = Stfac K0 (Istf=0) or Stfac (Istf=1)
 // or K0 combined with the secondary side (Istf 2-5), bounded by Stmin/Stmax and by the
 // fixed-step cap Kcap = 2 f m_s (Tsca/dt)^2 (m_s: the node's mass this cycle, added mass
@@ -108,6 +109,9 @@ class PenaltyContact {
   // Penalty law (exposed for tests): force and potential at penetration p, gap g.
   static double law_force(double p, double g, double kp, double kmax, bool linear);
   static double law_energy(double p, double g, double kp, double kmax, bool linear);
+  // dF/dp of law_force, and the penetration where the shell law's tangent reaches kmax.
+  static double law_stiffness(double p, double g, double kp, double kmax, bool linear);
+  static double law_tangent_limit(double g, double kp, double kmax);
 
  private:
   void sort(const NodalState& nodes);
