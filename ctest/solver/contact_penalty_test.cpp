@@ -10,7 +10,9 @@
 // - self-contact of a folded strip: no force from a node's own or neighbouring
 //   segments, opposite layers pushed apart with zero resultant;
 // - search: no re-sort before some node moved half the margin, re-sort after;
-// - fixed-step stiffness cap, Tstart/Tstop, gap from thickness (Igap 1).
+// - fixed-step stiffness cap, Tstart/Tstop, gap from thickness (Igap 1);
+// - Inacti 5/6: an initially penetrated node starts without force, its reduced gap grows
+//   back as it moves away and is dropped once it is clear.
 #include "contact/penalty_contact.hpp"
 #include "contact_test_support.hpp"
 
@@ -350,4 +352,47 @@ TEST(ContactPenalty, SoftShellContactAtTheMidSurfaceStaysBounded) {
   EXPECT_GT(f, g * std::sqrt(kp * kmax));
   EXPECT_LT(f, 2 * g * std::sqrt(kp * kmax));
   EXPECT_EQ(PenaltyContact::law_stiffness(g, g, kp, kmax, false), kmax);
+}
+
+// Inacti 6 (OpenRadioss): a node 0.2 above a shell with gap 0.5 (P0 = 0.3) gets the gap
+// Gap - P0 - 5 % (Gap - P0) = 0.19, so no force at t = 0; pushed 0.05 further in it feels
+// the law at p = 0.19 - 0.15 with that gap; the gap follows it out (0.95 d) and is dropped
+// beyond the full gap, after which the full law applies. Inacti 0 pushes at once.
+TEST(ContactPenalty, InactiSixStartsPenetratedNodesWithoutForce) {
+  const double kp = 100, g = 0.5, kmax = 100 * kp;
+  auto run = [&](int inacti, const std::vector<double>& z, std::vector<double>& fz, std::vector<double>& u) {
+    NodalState n;
+    ContactSurface s = flat_quad(n, 1.0, 1.0, kp, false);
+    const Index node = add_node(n, {0.1, -0.2, z.front()}, 1e-3);
+    PenaltyContactParams p;
+    p.gapmin = g;
+    p.vis_s = 0;
+    p.inacti = inacti;
+    PenaltyContact c(s, {node}, p, n);
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      n.x.z[node] = z[k];
+      n.force.fill(0);
+      c.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
+      fz.push_back(n.force.z[node]);
+      u.push_back(c.elastic_energy());
+    }
+  };
+  const std::vector<double> z = {0.2, 0.15, 0.3, 0.25, 0.6, 0.4};
+  std::vector<double> f6, u6, f0, u0, f5, u5;
+  run(6, z, f6, u6);
+  EXPECT_EQ(f6[0], 0.0);
+  EXPECT_EQ(u6[0], 0.0);
+  const double g6 = 0.95 * 0.2;
+  EXPECT_NEAR(f6[1], PenaltyContact::law_force(g6 - 0.15, g6, kp, kmax, false), 1e-12);
+  EXPECT_NEAR(u6[1], PenaltyContact::law_energy(g6 - 0.15, g6, kp, kmax, false), 1e-15);
+  EXPECT_EQ(f6[2], 0.0);  // out at 0.3: the gap follows, 0.95 x 0.3 = 0.285
+  // back in to 0.25: inside the raised gap 0.285 (it never shrinks back)
+  EXPECT_NEAR(f6[3], PenaltyContact::law_force(0.285 - 0.25, 0.285, kp, kmax, false), 1e-12);
+  EXPECT_EQ(f6[4], 0.0);  // 0.6: clear of the full gap, reduction dropped
+  EXPECT_NEAR(f6[5], PenaltyContact::law_force(g - 0.4, g, kp, kmax, false), 1e-12);
+  run(0, z, f0, u0);
+  EXPECT_NEAR(f0[0], PenaltyContact::law_force(g - 0.2, g, kp, kmax, false), 1e-12);
+  run(5, z, f5, u5);
+  EXPECT_EQ(f5[0], 0.0);
+  EXPECT_NEAR(f5[1], PenaltyContact::law_force(0.2 - 0.15, 0.2, kp, kmax, false), 1e-12);
 }

@@ -181,7 +181,13 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     return;
   }
   warn_unsupported(ctx, c, {"Ibag", "Idel", "Iadm", "Fpenmax", "ITIED", "mesh_size", "dtmin", "Irem_gap",
-                            "Irem_i2", "Inacti", "Ifiltr", "Xfreq", "Iform", "sens_id", "fct_IDF"});
+                            "Irem_i2", "Ifiltr", "Xfreq", "Iform", "sens_id", "fct_IDF"});
+  // Inacti 5 and 6 (variable gap for initially penetrated nodes) are carried; 1-4 are not.
+  if (contact::has_any(c, {"Inacti"})) {
+    const auto inacti = contact::int_any(c, {"Inacti"});
+    if (inacti == 5 || inacti == 6) p.inacti = static_cast<int>(inacti);
+    else if (inacti != 0) warn_unsupported(ctx, c, {"Inacti"});
+  }
   const RunControl& rc = ctx.model().control;
   if (rc.nodal_cst) {
     p.fixed_dt = rc.dt_min;

@@ -99,6 +99,7 @@ PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary
   prev_damping_.assign(ns, 0.0);
   prev_vn_.assign(ns, 0.0);
   prev_normal_.assign(ns, V3{});
+  if (p_.inacti == 5 || p_.inacti == 6) gap_cap_.assign(ns, std::numeric_limits<double>::infinity());
   pair_friction_stored_.assign(ns, 0.0);
 
   // Margin: half the mean segment edge unless given.
@@ -270,6 +271,60 @@ void PenaltyContact::update_segment_cache(const NodalState& nodes) {
   }
 }
 
+bool PenaltyContact::project_candidate(const NodalState& nodes, std::size_t i, Index seg, const V3& xs,
+                                       SegmentProjection& pr, double& g, double& signed_d, V3& n) const {
+  const auto su = static_cast<std::size_t>(seg);
+  // Cheap rejection on the segment's mean plane and bounding sphere (conservative:
+  // the warp is the largest corner distance to the mean plane).
+  {
+    const double g0 = gap_of_pair(i, seg);
+    const V3 d0 = xs - seg_centre_[su];
+    const double dn = dot(d0, seg_normal_[su]);
+    const double w = seg_warp_[su];
+    const double below = surf_.one_sided[su] ? surf_.depth[su] : g0;
+    if (dn > g0 + w || dn < -(below + w)) return false;
+    const double r = seg_radius_[su] + g0;
+    if (dot(d0, d0) - dn * dn > r * r) return false;
+  }
+  pr = project_on_segment(xs, corners(nodes, surf_.nodes[su]), surf_.is_triangle(su));
+  g = gap_of_pair(i, seg);
+  const V3 d = xs - pr.point;
+  signed_d = pr.distance;
+  n = V3{};
+  if (surf_.one_sided[su]) {
+    const double side = dot(d, pr.normal);
+    if (side < 0) {
+      // Past the face: only a node right under the face (its closest point is its
+      // projection along the normal, edges and corners included), not too deep.
+      if (pr.distance > surf_.depth[su] || side * side < (1.0 - 1e-9) * pr.distance * pr.distance)
+        return false;
+      signed_d = -pr.distance;
+      n = pr.normal;
+    } else {
+      n = pr.distance > 1e-12 * (g + margin_) ? (1.0 / pr.distance) * d : pr.normal;
+    }
+  } else {
+    // Two-sided shell: push away from the mid-surface on the node's side.
+    if (pr.distance > 1e-12 * (g + margin_)) n = (1.0 / pr.distance) * d;
+    else n = pr.normal;
+  }
+  return true;
+}
+
+double PenaltyContact::initial_gap_cap(const NodalState& nodes, std::size_t i, const V3& xs) const {
+  // Inacti 5: the gap of an initially penetrated node is its distance d0 to the closest
+  // segment it penetrates; Inacti 6: Gap - P0 - 5 % (Gap - P0) = 0.95 d0 (OpenRadioss).
+  double near_d = std::numeric_limits<double>::infinity();
+  for (std::uint32_t k = cand_start_[i]; k < cand_start_[i + 1]; ++k) {
+    SegmentProjection pr;
+    double g = 0, signed_d = 0;
+    V3 n{};
+    if (project_candidate(nodes, i, cand_segment_[k], xs, pr, g, signed_d, n) && g - signed_d > 0)
+      near_d = std::min(near_d, signed_d);
+  }
+  return std::isfinite(near_d) ? gap_cap_factor() * near_d : std::numeric_limits<double>::infinity();
+}
+
 void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   resultant_ = {};
   elastic_energy_ = 0;
@@ -302,58 +357,44 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   for (std::size_t i = 0; i < secondary_.size(); ++i) {
     const Index sn = secondary_[i];
     const V3 xs = node_x(nodes, sn);
-    // Closest in-contact candidate.
+    // Closest in-contact candidate. With Inacti 5/6 the gap of every pair of the node is
+    // at most gap_cap_[i]; near_d: smallest signed distance of a candidate within its full
+    // gap (+inf if none), from which the cap is set at the first cycle and raised after.
     Index best_seg = kNoIndex;
     SegmentProjection best{};
     double best_abs = 0, best_pen = 0, best_gap = 0;
     V3 best_n{};
+    double near_d = std::numeric_limits<double>::infinity();
+    const bool capped = !gap_cap_.empty();
+    if (capped && !gap_cap_set_) gap_cap_[i] = initial_gap_cap(nodes, i, xs);
+    const double cap = capped ? gap_cap_[i] : std::numeric_limits<double>::infinity();
     for (std::uint32_t k = cand_start_[i]; k < cand_start_[i + 1]; ++k) {
       const Index seg = cand_segment_[k];
-      const auto su = static_cast<std::size_t>(seg);
-      // Cheap rejection on the segment's mean plane and bounding sphere (conservative:
-      // the warp is the largest corner distance to the mean plane).
-      {
-        const double g0 = gap_of_pair(i, seg);
-        const V3 d0 = xs - seg_centre_[su];
-        const double dn = dot(d0, seg_normal_[su]);
-        const double w = seg_warp_[su];
-        const double below = surf_.one_sided[su] ? surf_.depth[su] : g0;
-        if (dn > g0 + w || dn < -(below + w)) continue;
-        const double r = seg_radius_[su] + g0;
-        if (dot(d0, d0) - dn * dn > r * r) continue;
-      }
-      const SegmentProjection pr = project_on_segment(xs, corners(nodes, surf_.nodes[su]), surf_.is_triangle(su));
-      const double g = gap_of_pair(i, seg);
-      const V3 d = xs - pr.point;
-      double signed_d = pr.distance;
+      SegmentProjection pr;
+      double g = 0, signed_d = 0;
       V3 n{};
-      if (surf_.one_sided[su]) {
-        const double side = dot(d, pr.normal);
-        if (side < 0) {
-          // Past the face: only a node right under the face (its closest point is its
-          // projection along the normal, edges and corners included), not too deep.
-          if (pr.distance > surf_.depth[su] || side * side < (1.0 - 1e-9) * pr.distance * pr.distance)
-            continue;
-          signed_d = -pr.distance;
-          n = pr.normal;
-        } else {
-          n = pr.distance > 1e-12 * (g + margin_) ? (1.0 / pr.distance) * d : pr.normal;
-        }
-      } else {
-        // Two-sided shell: push away from the mid-surface on the node's side.
-        if (pr.distance > 1e-12 * (g + margin_)) n = (1.0 / pr.distance) * d;
-        else n = pr.normal;
-      }
-      const double pen = g - signed_d;
+      if (!project_candidate(nodes, i, seg, xs, pr, g, signed_d, n)) continue;
+      if (g - signed_d > 0) near_d = std::min(near_d, signed_d);
+      const double ge = std::min(g, cap);
+      const double pen = ge - signed_d;
       if (pen <= 0) continue;
       if (best_seg == kNoIndex || std::abs(signed_d) < best_abs) {
         best_seg = seg;
         best = pr;
         best_abs = std::abs(signed_d);
         best_pen = pen;
-        best_gap = g;
+        best_gap = ge;
         best_n = n;
       }
+    }
+    // Inacti 5/6: the reduced gap only grows, following the node as it moves away
+    // (f d, f = 0.95 for Inacti 6), and is dropped once the node is clear of every
+    // segment's full gap. Raised after this cycle's force and only to a value the node is
+    // not inside (f d <= d), so the potential is 0 before and after: no energy jump.
+    if (capped) {
+      const double raised = gap_cap_factor() * near_d;
+      if (!std::isfinite(near_d)) gap_cap_[i] = std::numeric_limits<double>::infinity();
+      else if (raised > cap && raised <= near_d) gap_cap_[i] = raised;
     }
     if (best_seg == kNoIndex) {
       // Released: what the tangential spring held is lost to friction.
@@ -446,6 +487,7 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     resultant_.tangential_force += ft;
     ++resultant_.n_active;
   }
+  if (!gap_cap_.empty()) gap_cap_set_ = true;
   work_ += 0.5 * dt * (power_prev + power_now);
   // Nodal step of the nodes in contact, once all pairs added their stiffness.
   if (resultant_.n_active > 0) {

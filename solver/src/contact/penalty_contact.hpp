@@ -13,6 +13,8 @@
 // fixed-step cap Kcap = 2 f m_s (Tsca/dt)^2 (m_s: the node's mass this cycle, added mass
 // included) so that the contact alone never pulls the node's nodal step
 // dt_n = Tsca sqrt(2 m / k) under the fixed step (f = cap fraction).
+// Inacti 5/6: an initially penetrated node starts with its gap reduced to (95 % of) its
+// distance, which then grows back as it moves away (no initial kick).
 // Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
 // mass of node and segment; the total normal force is kept compressive. Coulomb friction
 // (Fric) by a regularised stick-slip (elastic-plastic tangential spring): F_t += -K v_t dt,
@@ -26,6 +28,7 @@
 
 #include "bucket_grid.hpp"
 #include "contact_surface.hpp"
+#include "segment_projection.hpp"
 #include "hbm/solver/nodal_state.hpp"
 #include "vec3.hpp"
 
@@ -52,6 +55,9 @@ struct PenaltyContactParams {
   double tsca = 0.9;       // /DT/NODA/CST Tsca
   double cap_fraction = 0.5;  // share of the nodal stiffness budget the contact may take
   double margin = 0.0;     // search margin (0: half the mean segment edge) [length]
+  int inacti = 0;          // initial penetrations: 0 none; 5 gap of a penetrated node reduced
+                           //   to its distance, 6 to 95 % of it (OpenRadioss), growing back
+                           //   as the node moves away
 };
 
 // Global results of one interface this cycle (time histories, listing).
@@ -117,6 +123,14 @@ class PenaltyContact {
   void sort(const NodalState& nodes);
   bool needs_sort(const NodalState& nodes) const;
   void update_segment_cache(const NodalState& nodes);
+  // Projection of secondary slot i (position xs) on candidate segment seg: false if the
+  // cheap bounds or the one-sided depth rule reject it; else the projection, the pair's
+  // gap, the signed distance (negative past a solid face) and the push direction.
+  bool project_candidate(const NodalState& nodes, std::size_t i, Index seg, const V3& xs,
+                         SegmentProjection& pr, double& g, double& signed_d, V3& n) const;
+  // Inacti 5/6: reduced gap of slot i at the first active cycle (+inf if not penetrated).
+  double initial_gap_cap(const NodalState& nodes, std::size_t i, const V3& xs) const;
+  double gap_cap_factor() const { return p_.inacti == 6 ? 0.95 : 1.0; }
   double pair_power(const NodalState& nodes, std::size_t slot, V3 f, Index seg,
                     const std::array<double, 4>& w) const;
 
@@ -166,6 +180,10 @@ class PenaltyContact {
   std::vector<std::array<double, 4>> prev_weight_;
   std::vector<double> prev_damping_, prev_vn_;  // damping force (along prev normal), v_n
   std::vector<V3> prev_normal_;
+  // Inacti 5/6: per secondary slot, upper bound on the gap of its pairs (+inf: none);
+  // set at the first active cycle (gap_cap_set_), then only raised.
+  std::vector<double> gap_cap_;
+  bool gap_cap_set_ = false;
 };
 
 }  // namespace hbm::solver::contact
