@@ -78,7 +78,8 @@ void add_engine(std::vector<KeywordSpec>& out) {
   {
     KeywordSpec k = card("/DT/SHELL/CST", IdKind::Optional,
                          "A 4-node shell whose time step Tsca dt_crit falls below Tmin switches to the small strain "
-                         "formulation (in-plane shape and step kept from the switch on; 3-node shells do not switch).");
+                         "formulation (in-plane shape and step kept from the switch on). Eltyp SHELL: 4-node shells (3-node shells are "
+                         "Eltyp SH_3N in OpenRadioss and keep their formulation).");
     k.lines.push_back(line("line 1", {
         real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
         real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),

@@ -188,13 +188,12 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
 }  // namespace
 
 // /DT/SHELL/CST of the engine deck (the last one counts, as for /DT/NODA/CST): Tsca, Tmin.
-// Returns Tmin 0 when absent. 3-node shells keep the large strain formulation: said, not
-// done silently.
+// Returns Tmin 0 when absent. It applies to 4-node shells: OpenRadioss' Eltyp SHELL; the
+// 3-node shells have their own Eltyp (/DT/SH_3N/CST, not carried), so /SH3N elements keep
+// the large strain formulation under /DT/SHELL/CST, as they would in OpenRadioss.
 static std::pair<double, double> read_shell_small_strain_switch(BuildContext& ctx) {
   double tsca = 0.9, tmin = 0.0;
   const auto cards = ctx.engine().cards_of("/DT/SHELL/CST");
-  if (!cards.empty() && !ctx.starter().cards_of("/SH3N").empty())
-    ctx.warning(*cards.back(), "/SH3N elements do not switch to small strain (4-node shells only)");
   for (const hbm::deck::Card* c : cards) {
     tsca = c->real(0, "Tsca");
     tmin = c->real(0, "Tmin");
