@@ -12,6 +12,14 @@ KeywordSpec card(std::string_view kw, IdKind id, std::string_view meaning) {
   return keyword(kw, Section::Engine, id, false, meaning);
 }
 
+// The "Tsca Tmin" line shared by the /DT/.../CST time step controls.
+LineSpec tsca_tmin_line() {
+  return line("line 1", {
+      real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
+      real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
+  });
+}
+
 }  // namespace
 
 void add_engine(std::vector<KeywordSpec>& out) {
@@ -54,10 +62,7 @@ void add_engine(std::vector<KeywordSpec>& out) {
   {
     KeywordSpec k = card("/DT/NODA/CST", IdKind::Optional,
                          "Nodal time step with added mass: dt_n = Tsca sqrt(2m/k) kept >= Tmin.");
-    k.lines.push_back(line("line 1", {
-        real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
-        real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
-    }));
+    k.lines.push_back(tsca_tmin_line());
     out.push_back(std::move(k));
   }
   {
@@ -65,10 +70,7 @@ void add_engine(std::vector<KeywordSpec>& out) {
                          "/DT/BRICK/CST/Iflag: a brick whose time step Tsca dt_crit falls below Tmin (Iflag 1: or whose "
                          "volume ratio V/V0 falls to VDEF_min) switches to the small strain formulation (geometry kept "
                          "from the switch on).");
-    k.lines.push_back(line("line 1", {
-        real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
-        real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
-    }));
+    k.lines.push_back(tsca_tmin_line());
     k.lines.push_back(line("line 2", {
         real_field("ASP_min", 0, Dimension::None, kNonNegative, 0, "minimum aspect ratio (tetra collapse; 0 = none)"),
         real_field("VDEF_min", 20, Dimension::None, {0, 1, false, true}, 0, "minimum volume ratio V/V0 (0 = none)"),
@@ -80,10 +82,7 @@ void add_engine(std::vector<KeywordSpec>& out) {
                          "A 4-node shell whose time step Tsca dt_crit falls below Tmin switches to the small strain "
                          "formulation (in-plane shape and step kept from the switch on). Eltyp SHELL: 4-node shells (3-node shells are "
                          "Eltyp SH_3N in OpenRadioss and keep their formulation).");
-    k.lines.push_back(line("line 1", {
-        real_field("Tsca", 0, Dimension::None, {0, 1, true, false}, 0.9, "time step scale factor"),
-        real_field("Tmin", 20, Dimension::Time, kNonNegative, 0, "minimum time step"),
-    }));
+    k.lines.push_back(tsca_tmin_line());
     out.push_back(std::move(k));
   }
   {
