@@ -80,8 +80,15 @@ void add_engine(std::vector<KeywordSpec>& out) {
   {
     KeywordSpec k = card("/DT/SHELL/CST", IdKind::Optional,
                          "A 4-node shell whose time step Tsca dt_crit falls below Tmin switches to the small strain "
-                         "formulation (in-plane shape and step kept from the switch on). Eltyp SHELL: 4-node shells (3-node shells are "
-                         "Eltyp SH_3N in OpenRadioss and keep their formulation).");
+                         "formulation (in-plane shape and step kept from the switch on). Eltyp SHELL: 4-node shells only "
+                         "(3-node shells: /DT/SH_3N/CST).");
+    k.lines.push_back(tsca_tmin_line());
+    out.push_back(std::move(k));
+  }
+  {
+    KeywordSpec k = card("/DT/SH_3N/CST", IdKind::Optional,
+                         "A 3-node shell whose time step Tsca dt_crit falls below Tmin switches to the small strain "
+                         "formulation (in-plane shape and step kept from the switch on).");
     k.lines.push_back(tsca_tmin_line());
     out.push_back(std::move(k));
   }

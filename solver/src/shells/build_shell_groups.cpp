@@ -187,23 +187,22 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
 
 }  // namespace
 
-// /DT/SHELL/CST of the engine deck (the last one counts, as for /DT/NODA/CST): Tsca, Tmin.
-// Returns Tmin 0 when absent. It applies to 4-node shells: OpenRadioss' Eltyp SHELL; the
-// 3-node shells have their own Eltyp (/DT/SH_3N/CST, not carried), so /SH3N elements keep
-// the large strain formulation under /DT/SHELL/CST, as they would in OpenRadioss.
-static std::pair<double, double> read_shell_small_strain_switch(BuildContext& ctx) {
+// /DT/SHELL/CST (4-node shells, OpenRadioss Eltyp SHELL) or /DT/SH_3N/CST (3-node shells,
+// Eltyp SH_3N) of the engine deck, the last one counting as for /DT/NODA/CST: Tsca, Tmin.
+// Returns Tmin 0 when absent.
+static std::pair<double, double> read_shell_small_strain_switch(BuildContext& ctx, std::string_view keyword) {
   double tsca = 0.9, tmin = 0.0;
-  const auto cards = ctx.engine().cards_of("/DT/SHELL/CST");
-  for (const hbm::deck::Card* c : cards) {
+  for (const hbm::deck::Card* c : ctx.engine().cards_of(keyword)) {
     tsca = c->real(0, "Tsca");
     tmin = c->real(0, "Tmin");
-    if (!(tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", "must be > 0 for /DT/SHELL/CST");
+    if (!(tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", cat("must be > 0 for ", keyword));
   }
   return {tsca, tmin};
 }
 
 void build_shell_groups(BuildContext& ctx) {
-  const auto [cst_tsca, cst_tmin] = read_shell_small_strain_switch(ctx);
+  const auto quad_cst = read_shell_small_strain_switch(ctx, "/DT/SHELL/CST");
+  const auto tria_cst = read_shell_small_strain_switch(ctx, "/DT/SH_3N/CST");
   for (std::string_view kw : {"/SHELL", "/SH3N"}) {
     ctx.claim(kw);
     const bool tria = kw == "/SH3N";
@@ -253,7 +252,8 @@ void build_shell_groups(BuildContext& ctx) {
         }
       if (!ok) continue;
       g->n_elements = g->element_id.size();
-      if (!tria && cst_tmin > 0) g->data.enable_small_strain_switch(cst_tsca, cst_tmin);
+      const auto [cst_tsca, cst_tmin] = tria ? tria_cst : quad_cst;
+      if (cst_tmin > 0) g->data.enable_small_strain_switch(cst_tsca, cst_tmin);
       const Index bad = g->initialize(ctx.nodes());
       if (bad != kNoIndex) {
         ctx.error(*cards.front(), cat("shell element ", num(g->element_id[static_cast<std::size_t>(bad)]),

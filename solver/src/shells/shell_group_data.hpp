@@ -53,16 +53,20 @@ struct ShellGroupData {
   std::vector<double> ehg;             // cumulative hourglass energy [energy]
   std::vector<double> dt_elem;         // stable step L_c / c of the last evaluation [time]
   std::vector<double> area;            // current area [length^2]
-  // /DT/SHELL/CST (quads): an element whose step Tsca x dt_elem falls below Tmin keeps,
-  // from then on, the in-plane shape it had at the switch (local x, y of its 4 nodes and
-  // area, in its corotational frame) and that step; the nodal velocities still give the
-  // rates (OpenRadioss: "switched to small strain formulation to maintain the constant
-  // time step"). A quad squeezed flat cannot fold through, its B matrix (~1/A) stays
-  // bounded and nodal mass scaling stops growing on its nodes.
-  static constexpr std::size_t kFrozenShapeStride = 13;
+  // /DT/SHELL/CST (quads) and /DT/SH_3N/CST (triangles): an element whose step Tsca x
+  // dt_elem falls below Tmin keeps, from then on, the in-plane shape it had at the switch
+  // (local coordinates of its corners and area, in its corotational frame) and that step;
+  // the nodal velocities still give the rates (OpenRadioss: "switched to small strain
+  // formulation to maintain the constant time step"). A shell squeezed flat cannot fold
+  // through, its B matrix (~1/A) stays bounded and nodal mass scaling stops growing on its
+  // nodes. frozen_shape per element, kFrozenShapeStride values: quads x[4], y[4];
+  // triangles l21, x3, y3 (node 2 on the local x axis, node 3 at (x3, y3)); then at
+  // kFrozenArea the area, kFrozenStep the step, kFrozenNormal the unit normal of the last
+  // evaluation (3 values).
+  static constexpr std::size_t kFrozenShapeStride = 13, kFrozenArea = 8, kFrozenStep = 9, kFrozenNormal = 10;
   double cst_tsca = 0.9, cst_tmin = 0.0;  // cst_tmin 0: no switch
   std::vector<std::uint8_t> frozen;    // 1: switched to small strain
-  std::vector<double> frozen_shape;    // per element kFrozenShapeStride: x[4], y[4], A, dt_elem at the switch, normal[3]
+  std::vector<double> frozen_shape;
 
   int extra_per_element() const { return kind == ShellKind::QuadBT ? 7 : 9; }
   // Stress component c (sxx, syy, sxy) at through-thickness point p of element e.
@@ -72,7 +76,7 @@ struct ShellGroupData {
   }
   // Sizes every array for n elements (conn, user_id, part, thick must be filled first).
   void allocate();
-  // /DT/SHELL/CST for a quad group (call before allocate).
+  // /DT/SHELL/CST (quads) or /DT/SH_3N/CST (triangles) for this group (call before allocate).
   void enable_small_strain_switch(double tsca, double tmin) {
     cst_tsca = tsca;
     cst_tmin = tmin;

@@ -130,8 +130,9 @@ void local_geometry(QuadLanes& b, std::size_t n) {
 // /DT/SHELL/CST: switched lanes take the in-plane shape frozen at the switch (local x, y,
 // area) in the current corotational frame; the frame keeps the orientation of the last
 // evaluation (a quad squeezed flat would otherwise flip its normal r31 x r42 and see its
-// frozen shape mirrored). Layout of frozen_shape per element: x[4], y[4], A, dt, n[3].
-constexpr std::size_t kFrozenStride = ShellGroupData::kFrozenShapeStride;
+// frozen shape mirrored). Layout of frozen_shape: ShellGroupData.
+constexpr std::size_t kFrozenStride = ShellGroupData::kFrozenShapeStride, kArea = ShellGroupData::kFrozenArea,
+                      kStep = ShellGroupData::kFrozenStep, kNormal = ShellGroupData::kFrozenNormal;
 
 void use_frozen_shape(QuadLanes& b, std::size_t n, ShellGroupData& g, const std::int32_t* idx) {
   if (g.frozen.empty()) return;
@@ -139,19 +140,19 @@ void use_frozen_shape(QuadLanes& b, std::size_t n, ShellGroupData& g, const std:
     const auto e = static_cast<std::size_t>(idx[l]);
     if (!g.frozen[e]) continue;
     double* f = &g.frozen_shape[e * kFrozenStride];
-    if (b.e3[0][l] * f[10] + b.e3[1][l] * f[11] + b.e3[2][l] * f[12] < 0.0) {
+    if (b.e3[0][l] * f[kNormal] + b.e3[1][l] * f[kNormal + 1] + b.e3[2][l] * f[kNormal + 2] < 0.0) {
       for (int c = 0; c < 3; ++c) {
         b.e3[c][l] = -b.e3[c][l];
         b.e2[c][l] = -b.e2[c][l];
       }
       for (int i = 0; i < 4; ++i) b.zw[i][l] = -b.zw[i][l];
     }
-    for (int c = 0; c < 3; ++c) f[10 + c] = b.e3[c][l];
+    for (int c = 0; c < 3; ++c) f[kNormal + c] = b.e3[c][l];
     for (int i = 0; i < 4; ++i) {
       b.x[i][l] = f[i];
       b.y[i][l] = f[4 + i];
     }
-    b.A[l] = f[8];
+    b.A[l] = f[kArea];
   }
 }
 
@@ -367,7 +368,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
     if (!g.frozen.empty())
       for (std::size_t l = 0; l < n; ++l)
-        if (g.frozen[static_cast<std::size_t>(idx[l])]) b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * kFrozenStride + 9];
+        if (g.frozen[static_cast<std::size_t>(idx[l])]) b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * kFrozenStride + kStep];
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
@@ -399,9 +400,9 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
           f[i] = b.x[i][l];
           f[4 + i] = b.y[i][l];
         }
-        f[8] = b.A[l];
-        f[9] = b.dte[l];
-        for (int c = 0; c < 3; ++c) f[10 + c] = b.e3[c][l];
+        f[kArea] = b.A[l];
+        f[kStep] = b.dte[l];
+        for (int c = 0; c < 3; ++c) f[kNormal + c] = b.e3[c][l];
         g.frozen[e] = 1;
       }
       if (b.dte[l] < tot.dt_min) {

@@ -119,6 +119,31 @@ void local_frame(TriaLanes& b, std::size_t n) {
   }
 }
 
+// /DT/SH_3N/CST: switched lanes take the in-plane shape frozen at the switch (|r21|, local
+// x, y of node 3, area) in the current frame; the frame keeps the orientation of the last
+// evaluation (a triangle squeezed through flat would otherwise flip its normal and see
+// its frozen shape mirrored). Layout: ShellGroupData::frozen_shape.
+void use_frozen_shape(TriaLanes& b, std::size_t n, ShellGroupData& g, const std::int32_t* idx) {
+  if (g.frozen.empty()) return;
+  constexpr std::size_t kS = ShellGroupData::kFrozenShapeStride, kN = ShellGroupData::kFrozenNormal;
+  for (std::size_t l = 0; l < n; ++l) {
+    const auto e = static_cast<std::size_t>(idx[l]);
+    if (!g.frozen[e] || b.ok[l] == 0.0) continue;
+    double* f = &g.frozen_shape[e * kS];
+    if (b.ez[0][l] * f[kN] + b.ez[1][l] * f[kN + 1] + b.ez[2][l] * f[kN + 2] < 0.0)
+      for (int c = 0; c < 3; ++c) {
+        b.ez[c][l] = -b.ez[c][l];
+        b.ey[c][l] = -b.ey[c][l];
+      }
+    for (int c = 0; c < 3; ++c) f[kN + c] = b.ez[c][l];
+    b.l21[l] = f[0];
+    b.x2[l] = f[1];
+    b.y2[l] = f[2];
+    b.A[l] = f[ShellGroupData::kFrozenArea];
+    b.sq[l] = 2.0 * b.A[l];
+  }
+}
+
 // CST B matrix and the DKT sides (sc, ss: side vector; sl: length, squared until the
 // caller's square root) in local coordinates.
 void side_geometry(TriaLanes& b, std::size_t n) {
@@ -143,7 +168,7 @@ void side_geometry(TriaLanes& b, std::size_t n) {
 // Cartesian derivatives dNx, dNy at the 3 points, with the expressions of the rate stage.
 // (Forces on the mid-step geometry lag the rates of the energy increment by a step in the
 // work 0.5 (f^{n-1} + f^n) . v^{n-1/2} dt; docs/engine-design.md 14.3.)
-void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
+void force_geometry(TriaLanes& b, std::size_t n, double hdt, ShellGroupData& g, const std::int32_t* idx) {
   for (int i = 0; i < 3; ++i)
     for (std::size_t l = 0; l < n; ++l) {
       b.X[i][l] += hdt * b.VX[i][l];
@@ -160,6 +185,7 @@ void force_geometry(TriaLanes& b, std::size_t n, double hdt) {
     b.l21[l] = good ? b.l21[l] : 1.0;
   }
   local_frame(b, n);
+  use_frozen_shape(b, n, g, idx);
   side_geometry(b, n);
   for (int k = 0; k < 3; ++k)
     for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
@@ -227,6 +253,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       b.l21[l] = good ? b.l21[l] : 1.0;
     }
     local_frame(b, n);
+    use_frozen_shape(b, n, g, idx);
     for (std::size_t l = 0; l < n; ++l) {
       const double exx = b.ex[0][l], exy = b.ex[1][l], exz = b.ex[2][l];
       const double eyx = b.ey[0][l], eyy = b.ey[1][l], eyz = b.ey[2][l];
@@ -337,7 +364,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       b.dEdev[l] = dEdev;
       b.dE[l] = b.A[l] * b.th.dE[l] + b.A[l] / 3.0 * dEdev;  // on the mid-step area
     }
-    force_geometry(b, n, hdt);
+    force_geometry(b, n, hdt, g, idx);
     for (std::size_t l = 0; l < n; ++l) {
       double Mg[3][3];
       for (int gp = 0; gp < 3; ++gp)
@@ -411,6 +438,11 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = 2.0 * b.A[l] / b.lmax2[l] / cwave;
+    if (!g.frozen.empty())
+      for (std::size_t l = 0; l < n; ++l)
+        if (g.frozen[static_cast<std::size_t>(idx[l])])
+          b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * ShellGroupData::kFrozenShapeStride +
+                                    ShellGroupData::kFrozenStep];
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
@@ -435,6 +467,16 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
       g.area[e] = b.A[l];
       g.dt_elem[e] = b.dte[l];
+      if (!g.frozen.empty() && !g.frozen[e] && g.cst_tsca * b.dte[l] < g.cst_tmin) {
+        double* f = &g.frozen_shape[e * ShellGroupData::kFrozenShapeStride];
+        f[0] = b.l21[l];
+        f[1] = b.x2[l];
+        f[2] = b.y2[l];
+        f[ShellGroupData::kFrozenArea] = b.A[l];
+        f[ShellGroupData::kFrozenStep] = b.dte[l];
+        for (int c = 0; c < 3; ++c) f[ShellGroupData::kFrozenNormal + c] = b.ez[c][l];
+        g.frozen[e] = 1;
+      }
       if (b.dte[l] < tot.dt_min) {
         tot.dt_min = b.dte[l];
         tot.dt_element = static_cast<std::int64_t>(e);
