@@ -363,6 +363,38 @@ void Builder::build_torso() {
     }
     if (L.kind == LayerKind::Disc) calibrate_disc(l, column, g_.disc_stiffness.at(L.vertebra));
   }
+  // Thoracic inlet: the suprapleural membrane (Sibson's fascia) over the top faces of the
+  // organ block and organ ring at the top level, from the rib cage wall to the spinal
+  // column (geometry/materials.csv). Without it the organ block extrudes upward through
+  // the open inlet under a frontal chest impact.
+  {
+    const int l = torso_->levels() - 2;
+    const auto& fs = g_.shell_sections.at("thoracic_inlet_fascia");
+    const int mi = material("thoracic_inlet_fascia");
+    const int inlet = part("thoracic_inlet_fascia", ElementKind::Shell, mi, "thorax", "organs", fs.total_thickness);
+    const int inlet_tri = part("thoracic_inlet_fascia_tria", ElementKind::Tria, mi, "thorax", "organs", fs.total_thickness);
+    for (int a = 0; a < m; ++a)
+      for (int c = 0; c < m; ++c) {
+        auto h = torso_->block_cell(l, a, c);
+        skin_quad(inlet, inlet_tri, {h[4], h[5], h[6], h[7]});
+      }
+    // Ring cells two by two (a single cell's top face is a radial sliver, aspect 9-12),
+    // from the first cell after the column round to the last one before it.
+    int j0 = 0;
+    while (!torso_->is_column_cell(0, j0)) ++j0;
+    while (torso_->is_column_cell(0, j0 % N)) ++j0;
+    std::vector<int> free_cells;
+    for (int k = 0; k < N; ++k)
+      if (!torso_->is_column_cell(0, (j0 + k) % N)) free_cells.push_back((j0 + k) % N);
+    for (std::size_t k = 0; k + 1 < free_cells.size(); k += 2) {
+      auto a = torso_->ring_cell(l, 0, free_cells[k]), c = torso_->ring_cell(l, 0, free_cells[k + 1]);
+      skin_quad(inlet, inlet_tri, {a[4], a[5], c[6], c[7]});
+    }
+    if (free_cells.size() % 2 == 1) {
+      auto h = torso_->ring_cell(l, 0, free_cells.back());
+      skin_quad(inlet, inlet_tri, {h[4], h[5], h[6], h[7]});
+    }
+  }
   // Landmarks for the trunk CoG reference: centres of the skin curve at region boundaries.
   auto centre = [&](const std::string& level_name) {
     for (int l = 0; l < torso_->levels(); ++l)
