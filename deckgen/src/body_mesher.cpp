@@ -380,9 +380,9 @@ void Builder::build_torso() {
       }
     // Ring cells two by two (a single cell's top face is a radial sliver, aspect 9-12),
     // from the first cell after the column round to the last one before it.
-    int j0 = 0;
-    while (!torso_->is_column_cell(0, j0)) ++j0;
-    while (torso_->is_column_cell(0, j0 % N)) ++j0;
+    int j0 = 0;  // first cell after the column (0 if the ring had no column cell)
+    for (int k = 0; k < N; ++k)
+      if (torso_->is_column_cell(0, k) && !torso_->is_column_cell(0, (k + 1) % N)) j0 = (k + 1) % N;
     std::vector<int> free_cells;
     for (int k = 0; k < N; ++k)
       if (!torso_->is_column_cell(0, (j0 + k) % N)) free_cells.push_back((j0 + k) % N);

@@ -276,18 +276,17 @@ bool PenaltyContact::project_candidate(const NodalState& nodes, std::size_t i, I
   const auto su = static_cast<std::size_t>(seg);
   // Cheap rejection on the segment's mean plane and bounding sphere (conservative:
   // the warp is the largest corner distance to the mean plane).
+  g = gap_of_pair(i, seg);
   {
-    const double g0 = gap_of_pair(i, seg);
     const V3 d0 = xs - seg_centre_[su];
     const double dn = dot(d0, seg_normal_[su]);
     const double w = seg_warp_[su];
-    const double below = surf_.one_sided[su] ? surf_.depth[su] : g0;
-    if (dn > g0 + w || dn < -(below + w)) return false;
-    const double r = seg_radius_[su] + g0;
+    const double below = surf_.one_sided[su] ? surf_.depth[su] : g;
+    if (dn > g + w || dn < -(below + w)) return false;
+    const double r = seg_radius_[su] + g;
     if (dot(d0, d0) - dn * dn > r * r) return false;
   }
   pr = project_on_segment(xs, corners(nodes, surf_.nodes[su]), surf_.is_triangle(su));
-  g = gap_of_pair(i, seg);
   const V3 d = xs - pr.point;
   signed_d = pr.distance;
   n = V3{};

@@ -22,7 +22,6 @@
 #include <limits>
 #include <map>
 #include <string>
-#include <utility>
 
 namespace hbm::solver {
 
@@ -189,15 +188,16 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
 
 // /DT/SHELL/CST (4-node shells, OpenRadioss Eltyp SHELL) or /DT/SH_3N/CST (3-node shells,
 // Eltyp SH_3N) of the engine deck, the last one counting as for /DT/NODA/CST: Tsca, Tmin.
-// Returns Tmin 0 when absent.
-static std::pair<double, double> read_shell_small_strain_switch(BuildContext& ctx, std::string_view keyword) {
-  double tsca = 0.9, tmin = 0.0;
+// Disabled when absent.
+static SmallStrainSwitch read_shell_small_strain_switch(BuildContext& ctx, std::string_view keyword) {
+  SmallStrainSwitch sw;
   for (const hbm::deck::Card* c : ctx.engine().cards_of(keyword)) {
-    tsca = c->real(0, "Tsca");
-    tmin = c->real(0, "Tmin");
-    if (!(tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", cat("must be > 0 for ", keyword));
+    sw.enabled = true;
+    sw.tsca = c->real(0, "Tsca");
+    sw.tmin = c->real(0, "Tmin");
+    if (!(sw.tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", cat("must be > 0 for ", keyword));
   }
-  return {tsca, tmin};
+  return sw;
 }
 
 void build_shell_groups(BuildContext& ctx) {
@@ -252,8 +252,7 @@ void build_shell_groups(BuildContext& ctx) {
         }
       if (!ok) continue;
       g->n_elements = g->element_id.size();
-      const auto [cst_tsca, cst_tmin] = tria ? tria_cst : quad_cst;
-      if (cst_tmin > 0) g->data.enable_small_strain_switch(cst_tsca, cst_tmin);
+      g->data.small_strain = tria ? tria_cst : quad_cst;
       const Index bad = g->initialize(ctx.nodes());
       if (bad != kNoIndex) {
         ctx.error(*cards.front(), cat("shell element ", num(g->element_id[static_cast<std::size_t>(bad)]),

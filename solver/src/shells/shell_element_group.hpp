@@ -30,11 +30,7 @@ class ShellElementGroup final : public ElementGroup {
                       GroupStepResult& result) override;
   bool solid_cells() const override { return false; }
   void cell_field(CellField field, std::span<double> out) const override;
-  std::size_t n_small_strain() const override {
-    std::size_t c = 0;
-    for (std::uint8_t f : data.frozen) c += f;
-    return c;
-  }
+  std::size_t n_small_strain() const override { return data.n_frozen(); }
   // Drops the elements inside a rigid body from the computed list.
   void deactivate(std::span<const std::uint8_t> inside) override;
 

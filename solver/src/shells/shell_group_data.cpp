@@ -21,7 +21,7 @@ void ShellGroupData::allocate() {
   ehg.assign(n, 0.0);
   dt_elem.assign(n, 1e300);
   area.assign(n, 0.0);
-  frozen.assign(cst_tmin > 0 ? n : 0, 0);
+  frozen.assign(small_strain.enabled ? n : 0, 0);
   frozen_shape.assign(frozen.size() * kFrozenShapeStride, 0.0);
 }
 

@@ -10,9 +10,11 @@
 // faster on hbm-shells-bench, so the simpler element-major layout stays.)
 #pragma once
 
+#include "solid/small_strain_switch.hpp"
 #include "shells/shell_material.hpp"
 #include "shells/shell_section.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -64,9 +66,26 @@ struct ShellGroupData {
   // kFrozenArea the area, kFrozenStep the step, kFrozenNormal the unit normal of the last
   // evaluation (3 values).
   static constexpr std::size_t kFrozenShapeStride = 13, kFrozenArea = 8, kFrozenStep = 9, kFrozenNormal = 10;
-  double cst_tsca = 0.9, cst_tmin = 0.0;  // cst_tmin 0: no switch
-  std::vector<std::uint8_t> frozen;    // 1: switched to small strain
+  SmallStrainSwitch small_strain;      // Tsca, Tmin (the volume criterion is for bricks)
+  std::vector<std::uint8_t> frozen;    // 1: switched (empty when the switch is off)
   std::vector<double> frozen_shape;
+
+  bool is_frozen(std::size_t e) const { return !frozen.empty() && frozen[e] != 0; }
+  double* frozen_values(std::size_t e) { return &frozen_shape[e * kFrozenShapeStride]; }
+  double frozen_step(std::size_t e) const { return frozen_shape[e * kFrozenShapeStride + kFrozenStep]; }
+  // After element e's evaluation with step dte, area A and unit normal n: switches it if
+  // the criterion holds and returns where its in-plane shape goes (the caller writes it),
+  // else nullptr.
+  double* freeze_if_due(std::size_t e, double dte, double A, const double n[3]) {
+    if (frozen.empty() || frozen[e] || !small_strain.triggers(dte, 1.0)) return nullptr;
+    frozen[e] = 1;
+    double* f = frozen_values(e);
+    f[kFrozenArea] = A;
+    f[kFrozenStep] = dte;
+    for (int c = 0; c < 3; ++c) f[kFrozenNormal + c] = n[c];
+    return f;
+  }
+  std::size_t n_frozen() const { return static_cast<std::size_t>(std::count(frozen.begin(), frozen.end(), 1)); }
 
   int extra_per_element() const { return kind == ShellKind::QuadBT ? 7 : 9; }
   // Stress component c (sxx, syy, sxy) at through-thickness point p of element e.
@@ -76,11 +95,6 @@ struct ShellGroupData {
   }
   // Sizes every array for n elements (conn, user_id, part, thick must be filled first).
   void allocate();
-  // /DT/SHELL/CST (quads) or /DT/SH_3N/CST (triangles) for this group (call before allocate).
-  void enable_small_strain_switch(double tsca, double tmin) {
-    cst_tsca = tsca;
-    cst_tmin = tmin;
-  }
   // Von Mises stress (mean over points) and maximum plastic strain of element e.
   double von_mises(std::size_t e) const;
   double max_epsp(std::size_t e) const;

@@ -131,15 +131,14 @@ void local_geometry(QuadLanes& b, std::size_t n) {
 // area) in the current corotational frame; the frame keeps the orientation of the last
 // evaluation (a quad squeezed flat would otherwise flip its normal r31 x r42 and see its
 // frozen shape mirrored). Layout of frozen_shape: ShellGroupData.
-constexpr std::size_t kFrozenStride = ShellGroupData::kFrozenShapeStride, kArea = ShellGroupData::kFrozenArea,
-                      kStep = ShellGroupData::kFrozenStep, kNormal = ShellGroupData::kFrozenNormal;
+constexpr std::size_t kArea = ShellGroupData::kFrozenArea, kNormal = ShellGroupData::kFrozenNormal;
 
 void use_frozen_shape(QuadLanes& b, std::size_t n, ShellGroupData& g, const std::int32_t* idx) {
   if (g.frozen.empty()) return;
   for (std::size_t l = 0; l < n; ++l) {
     const auto e = static_cast<std::size_t>(idx[l]);
     if (!g.frozen[e]) continue;
-    double* f = &g.frozen_shape[e * kFrozenStride];
+    double* f = g.frozen_values(e);
     if (b.e3[0][l] * f[kNormal] + b.e3[1][l] * f[kNormal + 1] + b.e3[2][l] * f[kNormal + 2] < 0.0) {
       for (int c = 0; c < 3; ++c) {
         b.e3[c][l] = -b.e3[c][l];
@@ -368,7 +367,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
     if (!g.frozen.empty())
       for (std::size_t l = 0; l < n; ++l)
-        if (g.frozen[static_cast<std::size_t>(idx[l])]) b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * kFrozenStride + kStep];
+        if (g.is_frozen(static_cast<std::size_t>(idx[l]))) b.dte[l] = g.frozen_step(static_cast<std::size_t>(idx[l]));
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
@@ -394,17 +393,12 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
       if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
       g.area[e] = b.A[l];
       g.dt_elem[e] = b.dte[l];
-      if (!g.frozen.empty() && !g.frozen[e] && g.cst_tsca * b.dte[l] < g.cst_tmin) {
-        double* f = &g.frozen_shape[e * kFrozenStride];
+      const double nrm[3] = {b.e3[0][l], b.e3[1][l], b.e3[2][l]};
+      if (double* f = g.freeze_if_due(e, b.dte[l], b.A[l], nrm))
         for (int i = 0; i < 4; ++i) {
           f[i] = b.x[i][l];
           f[4 + i] = b.y[i][l];
         }
-        f[kArea] = b.A[l];
-        f[kStep] = b.dte[l];
-        for (int c = 0; c < 3; ++c) f[kNormal + c] = b.e3[c][l];
-        g.frozen[e] = 1;
-      }
       if (b.dte[l] < tot.dt_min) {
         tot.dt_min = b.dte[l];
         tot.dt_element = static_cast<std::int64_t>(e);

@@ -125,11 +125,11 @@ void local_frame(TriaLanes& b, std::size_t n) {
 // its frozen shape mirrored). Layout: ShellGroupData::frozen_shape.
 void use_frozen_shape(TriaLanes& b, std::size_t n, ShellGroupData& g, const std::int32_t* idx) {
   if (g.frozen.empty()) return;
-  constexpr std::size_t kS = ShellGroupData::kFrozenShapeStride, kN = ShellGroupData::kFrozenNormal;
+  constexpr std::size_t kN = ShellGroupData::kFrozenNormal;
   for (std::size_t l = 0; l < n; ++l) {
     const auto e = static_cast<std::size_t>(idx[l]);
     if (!g.frozen[e] || b.ok[l] == 0.0) continue;
-    double* f = &g.frozen_shape[e * kS];
+    double* f = g.frozen_values(e);
     if (b.ez[0][l] * f[kN] + b.ez[1][l] * f[kN + 1] + b.ez[2][l] * f[kN + 2] < 0.0)
       for (int c = 0; c < 3; ++c) {
         b.ez[c][l] = -b.ez[c][l];
@@ -440,9 +440,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = 2.0 * b.A[l] / b.lmax2[l] / cwave;
     if (!g.frozen.empty())
       for (std::size_t l = 0; l < n; ++l)
-        if (g.frozen[static_cast<std::size_t>(idx[l])])
-          b.dte[l] = g.frozen_shape[static_cast<std::size_t>(idx[l]) * ShellGroupData::kFrozenShapeStride +
-                                    ShellGroupData::kFrozenStep];
+        if (g.is_frozen(static_cast<std::size_t>(idx[l]))) b.dte[l] = g.frozen_step(static_cast<std::size_t>(idx[l]));
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
@@ -467,15 +465,11 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       if (sec.thickness_change) g.thick[e] = b.th.t[l] * (1.0 + b.th.dezz[l]);
       g.area[e] = b.A[l];
       g.dt_elem[e] = b.dte[l];
-      if (!g.frozen.empty() && !g.frozen[e] && g.cst_tsca * b.dte[l] < g.cst_tmin) {
-        double* f = &g.frozen_shape[e * ShellGroupData::kFrozenShapeStride];
+      const double nrm[3] = {b.ez[0][l], b.ez[1][l], b.ez[2][l]};
+      if (double* f = g.freeze_if_due(e, b.dte[l], b.A[l], nrm)) {
         f[0] = b.l21[l];
         f[1] = b.x2[l];
         f[2] = b.y2[l];
-        f[ShellGroupData::kFrozenArea] = b.A[l];
-        f[ShellGroupData::kFrozenStep] = b.dte[l];
-        for (int c = 0; c < 3; ++c) f[ShellGroupData::kFrozenNormal + c] = b.ez[c][l];
-        g.frozen[e] = 1;
       }
       if (b.dte[l] < tot.dt_min) {
         tot.dt_min = b.dte[l];
