@@ -16,8 +16,23 @@ using hbm::deck::Deck;
 
 namespace {
 
-constexpr int kSolidProp = 1;      // soft tissue bricks (LAW34)
-constexpr int kBoneSolidProp = 2;  // bone and thoracolumbar disc bricks (LAW1)
+constexpr int kSolidProp = 1;          // soft tissue bricks (LAW34), viscous hourglass
+constexpr int kBoneSolidProp = 2;      // bone and thoracolumbar disc bricks (LAW1)
+constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical hourglass
+
+// Hourglass form of a soft tissue (LAW34) brick part (docs/engine-design.md 12.6).
+// The organ blocks and the flesh of the abdomen and pelvis take the physical
+// stabilisation (Isolid 24: elastic assumed-strain hourglass stiffness from G, Belytschko
+// & Bindeman 1993): their bending and warping under the impactor, the seat and the floor
+// are deformations that the viscous form can only follow through its hourglass modes, so
+// it dissipated them as hourglass energy and carried load by that damping (drop deck 36.6 %
+// hourglass / internal energy, 7.6 % with this form). Two parts keep the viscous form
+// (Isolid 1): the thoracic flesh, a two-brick layer that the hub's rim folds until a brick
+// inverts with Isolid 24 (12.8-28.6 ms in the hub cases), and the neck's soft tissue (muscles,
+// visceral column, cervical discs), whose bricks inverted in every run that changed it.
+bool soft_tissue_physical_hourglass(const FePart& p) {
+  return p.segment != "neck" && p.name != "flesh_thorax";
+}
 int shell_prop_id(const FePart& p) { return 1000 + p.id; }
 int spring_prop_id(const FeSpringProp& s) { return 2000 + s.id; }
 int rbody_group_id(const FeRigidBody& r) { return 10000 + r.id; }
@@ -85,6 +100,12 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       .set(1, "qb", 0.05)
       .set(1, "h", 0.1)
       .commit();
+  CardBuilder(d, "/PROP/TYPE14", kSoftPhysicalProp, "soft tissue solids: 1-point brick, physical hourglass")
+      .set_int(0, "Isolid", 24)
+      .set(1, "qa", 1.1)
+      .set(1, "qb", 0.05)
+      .set(1, "h", 0.1)
+      .commit();
   for (const FePart& p : m.parts) {
     if (p.kind != ElementKind::Shell && p.kind != ElementKind::Tria) continue;
     // Ishell 4: Belytschko Q4 with hourglass modes orthogonalised for warped elements
@@ -123,7 +144,9 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       c.set_int(0, "mat_id", 0);
     } else {
       const FeMaterial& mat = m.materials[static_cast<std::size_t>(p.material)];
-      const int solid_prop = mat.law == "LAW1" ? kBoneSolidProp : kSolidProp;
+      const int solid_prop = mat.law == "LAW1"                    ? kBoneSolidProp
+                             : soft_tissue_physical_hourglass(p) ? kSoftPhysicalProp
+                                                                 : kSolidProp;
       c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? solid_prop : shell_prop_id(p));
       c.set_int(0, "mat_id", mat.id);
     }
