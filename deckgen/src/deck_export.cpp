@@ -26,9 +26,9 @@ constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical h
 // & Bindeman 1993): their bending and warping under the impactor, the seat and the floor
 // are deformations that the viscous form can only follow through its hourglass modes, so
 // it dissipated them as hourglass energy and carried load by that damping (drop deck 36.6 %
-// hourglass / internal energy, 7.6 % with this form). Two parts keep the viscous form
+// hourglass / internal energy, 7.4 % with this form). Two parts keep the viscous form
 // (Isolid 1): the thoracic flesh, a two-brick layer that the hub's rim folds until a brick
-// inverts with Isolid 24 (12.8-28.6 ms in the hub cases), and the neck's soft tissue (muscles,
+// inverts with Isolid 24 (12.9-47.0 ms in the hub cases), and the neck's soft tissue (muscles,
 // visceral column, cervical discs), whose bricks inverted in every run that changed it.
 bool soft_tissue_physical_hourglass(const FePart& p) {
   return p.segment != "neck" && p.name != "flesh_thorax";
