@@ -26,13 +26,14 @@ constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical h
 // & Bindeman 1993): their bending and warping under the impactor, the seat and the floor
 // are deformations that the viscous form can only follow through its hourglass modes, so
 // it dissipated them as hourglass energy and carried load by that damping (drop deck 36.6 %
-// hourglass / internal energy, 7.4 % with this form). Two parts keep the viscous form
+// hourglass / internal energy, 7.4 % with this form). Two groups keep the viscous form
 // (Isolid 1): the thoracic flesh, a two-brick layer that the hub's rim folds until a brick
 // inverts with Isolid 24 (12.9-47.0 ms in the hub cases), and the neck's soft tissue (muscles,
 // visceral column, cervical discs), whose bricks inverted in every run that changed it.
 bool soft_tissue_physical_hourglass(const FePart& p) {
   return p.segment != "neck" && p.name != "flesh_thorax";
 }
+
 int shell_prop_id(const FePart& p) { return 1000 + p.id; }
 int spring_prop_id(const FeSpringProp& s) { return 2000 + s.id; }
 int rbody_group_id(const FeRigidBody& r) { return 10000 + r.id; }
