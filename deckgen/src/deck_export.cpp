@@ -82,31 +82,26 @@ Deck model_cards(const FeModel& m, const std::string& title) {
           .commit();
     }
   }
-  // Properties: two solid properties; one shell property per shell part; spring properties.
-  CardBuilder(d, "/PROP/TYPE14", kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass")
-      .set_int(0, "Isolid", 1)
-      .set(1, "qa", 1.1)
-      .set(1, "qb", 0.05)
-      .set(1, "h", 0.1)
-      .commit();
+  // Properties: three solid properties; one shell property per shell part; spring properties.
+  // Solid properties share the bulk viscosity (qa 1.1, qb 0.05) and hourglass coefficient
+  // (h 0.1, the viscous form's, and the physical form's small viscous part).
+  auto solid_property = [&d](int id, const std::string& name, int isolid) {
+    CardBuilder(d, "/PROP/TYPE14", id, name)
+        .set_int(0, "Isolid", isolid)
+        .set(1, "qa", 1.1)
+        .set(1, "qb", 0.05)
+        .set(1, "h", 0.1)
+        .commit();
+  };
+  solid_property(kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass", 1);
   // Vertebral units and thoracolumbar discs (LAW1) are one or two bricks through their
   // height and bend with the spine: for a one-point brick that bending is its hourglass
   // modes. The physical stabilisation (Isolid 24: assumed-strain hourglass stiffness from
   // G, Belytschko & Bindeman 1993) gives those bricks their elastic bending stiffness; with
   // the viscous form the spine held 8-15 J of hourglass energy against 0.1-0.2 J internal
   // in the hub cases (docs/engine-design.md §12).
-  CardBuilder(d, "/PROP/TYPE14", kBoneSolidProp, "bone and disc solids: 1-point brick, physical hourglass")
-      .set_int(0, "Isolid", 24)
-      .set(1, "qa", 1.1)
-      .set(1, "qb", 0.05)
-      .set(1, "h", 0.1)
-      .commit();
-  CardBuilder(d, "/PROP/TYPE14", kSoftPhysicalProp, "soft tissue solids: 1-point brick, physical hourglass")
-      .set_int(0, "Isolid", 24)
-      .set(1, "qa", 1.1)
-      .set(1, "qb", 0.05)
-      .set(1, "h", 0.1)
-      .commit();
+  solid_property(kBoneSolidProp, "bone and disc solids: 1-point brick, physical hourglass", 24);
+  solid_property(kSoftPhysicalProp, "soft tissue solids: 1-point brick, physical hourglass", 24);
   for (const FePart& p : m.parts) {
     if (p.kind != ElementKind::Shell && p.kind != ElementKind::Tria) continue;
     // Ishell 4: Belytschko Q4 with hourglass modes orthogonalised for warped elements
