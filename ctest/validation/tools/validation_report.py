@@ -103,6 +103,16 @@ def listing_facts(run_dir, case):
     m = re.search(r"TIMING \(wall ([0-9.eE+-]+) s, (\d+) cycles\)", text)
     if m:
         facts["solver_wall_s"], facts["cycles"] = float(m.group(1)), int(m.group(2))
+    # Threads the run used: a fixed count ("threads N,") or the engine's choice per stretch
+    # of cycles ("threads chosen per stretch: A cycles on 1, B on N").
+    t = re.search(r"threads chosen per stretch: (\d+) cycles on 1, (\d+) on (\d+)", text)
+    if t:
+        one, many, n = int(t.group(1)), int(t.group(2)), t.group(3)
+        facts["threads_used"] = f"{n} ({100 * many / max(one + many, 1):.0f} % of cycles), else 1"
+    else:
+        t = re.search(r"^  threads (\d+), process CPU time", text, re.M)
+        if t:
+            facts["threads_used"] = t.group(1)
     if "NORMAL TERMINATION" in text:
         facts["terminated"] = "normal"
     elif not m:
@@ -153,7 +163,7 @@ def main():
                         tstop = float(lines[i + 1].split()[0])
                 break
         r = {"case": c, "tstop": tstop, "exit": kv.get("exit_code", "-"), "wall": float(kv["wall_s"]) if "wall_s" in kv else None,
-             "threads": kv.get("threads", "-"), **lf}
+             "threads": lf.get("threads_used", kv.get("threads", "-")), **lf}
         if gh and gh["time"]:
             r["t_end"] = gh["time"][-1]
             r["energy_err"] = 100 * max(abs(e) for e in gh["energy error"])
