@@ -73,6 +73,13 @@ struct ShellGroupData {
   bool is_frozen(std::size_t e) const { return !frozen.empty() && frozen[e] != 0; }
   double* frozen_values(std::size_t e) { return &frozen_shape[e * kFrozenShapeStride]; }
   double frozen_step(std::size_t e) const { return frozen_shape[e * kFrozenShapeStride + kFrozenStep]; }
+  // Lanes of switched elements (idx: element of each of the n lanes) keep the step they
+  // had at the switch.
+  void use_frozen_steps(double* dte, const std::int32_t* idx, std::size_t n) const {
+    if (frozen.empty()) return;
+    for (std::size_t l = 0; l < n; ++l)
+      if (is_frozen(static_cast<std::size_t>(idx[l]))) dte[l] = frozen_step(static_cast<std::size_t>(idx[l]));
+  }
   // After element e's evaluation with step dte, area A and unit normal n: switches it if
   // the criterion holds and returns where its in-plane shape goes (the caller writes it),
   // else nullptr.

@@ -365,9 +365,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
-    if (!g.frozen.empty())
-      for (std::size_t l = 0; l < n; ++l)
-        if (g.is_frozen(static_cast<std::size_t>(idx[l]))) b.dte[l] = g.frozen_step(static_cast<std::size_t>(idx[l]));
+    g.use_frozen_steps(b.dte, idx, n);
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
     // state).
