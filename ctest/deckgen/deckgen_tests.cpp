@@ -342,6 +342,34 @@ TEST(Mechanics, EquivalentRibStripKeepsBendingAndAxialStiffness) {
   EXPECT_NEAR(hollow_ellipse_inertia(h, w, 3), M_PI / 4 * 6.5 * 27, 1e-9);
 }
 
+TEST(Mechanics, SandwichPlateKeepsTheCorticesStiffness) {
+  // Two 1 mm cortices on an 8 mm plate: per unit width A = 2, I = (8^3 - 6^3) / 12.
+  const EquivalentPlate p = sandwich_plate(8, 1);
+  const double A = 2, I = (512.0 - 216.0) / 12;
+  EXPECT_NEAR(p.modulus_scale * p.thickness, A, 1e-12);                              // E_eq t = E A
+  EXPECT_NEAR(p.modulus_scale * p.thickness * p.thickness * p.thickness / 12, I, 1e-9);  // E_eq t^3/12 = E I
+  // A cortex of half the thickness or more is a solid plate.
+  const EquivalentPlate solid = sandwich_plate(2, 2);
+  EXPECT_NEAR(solid.thickness, 2, 1e-12);
+  EXPECT_NEAR(solid.modulus_scale, 1, 1e-12);
+}
+
+TEST(Model, PelvisCortexIsTheSandwichOfItsSection) {
+  // The pelvic bone shell carries the bending stiffness of its two cortices over the
+  // trabecular core (shell_sections.csv pelvis_cortex), not that of one cortical layer.
+  const FeModel& m = model().m;
+  const auto& sec = model().g.shell_sections.at("pelvis_cortex");
+  const int p = m.find_part("pelvis_cortex");
+  ASSERT_GE(p, 0);
+  const FePart& part = m.parts[static_cast<std::size_t>(p)];
+  const FeMaterial& mat = m.materials[static_cast<std::size_t>(part.material)];
+  const double Ec = model().g.material("pelvis_cortical").e_or_k * 1e-3;  // MPa -> GPa
+  const double T = sec.total_thickness, tc = sec.cortical;
+  EXPECT_GT(T, 2 * tc);
+  EXPECT_NEAR(mat.E * part.thickness, Ec * 2 * tc, 1e-9 * Ec);
+  EXPECT_NEAR(mat.E * std::pow(part.thickness, 3) / 12, Ec * (T * T * T - std::pow(T - 2 * tc, 3)) / 12, 1e-9 * Ec * T * T * T);
+}
+
 TEST(Posture, KneeRotationMovesTheLegRigidlyAboutTheKnee) {
   GeometrySources g = load_geometry(kGeometry);
   const double a = 10 * M_PI / 180;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 namespace hbm::deckgen {
 
@@ -33,6 +34,15 @@ double equivalent_rib_thickness(double height, double width, double cortical, do
   // Strip of thickness t and modulus E_eq with E_eq h t = E A and E_eq h t^3 / 12 = E I:
   // t = sqrt(12 I / A), independent of the strip height h.
   return std::sqrt(12 * hollow_ellipse_inertia(height, width, cortical) / hollow_ellipse_area(height, width, cortical));
+}
+
+EquivalentPlate sandwich_plate(double total, double cortical) {
+  const double T = total, tc = std::min(cortical, total / 2);  // tc = T / 2: a solid plate
+  const double Iw = (T * T * T - std::pow(T - 2 * tc, 3)) / 12, Aw = 2 * tc;
+  EquivalentPlate p;
+  p.thickness = std::sqrt(12 * Iw / Aw);
+  p.modulus_scale = Aw / p.thickness;
+  return p;
 }
 
 namespace {
@@ -80,6 +90,20 @@ class Builder {
     int i = m_.find_material(name);
     if (i >= 0) return i;
     return m_.add_material(convert(g_.material(name), name));
+  }
+  // Material `name` for a sandwich plate of section `section` (shell_sections.csv) made of the
+  // cortical material `cortex`: modulus scaled to the plate's equivalent shell
+  // (sandwich_plate), density keeping the cortices' and the core's mass. Returns the
+  // material and the equivalent thickness.
+  std::pair<int, double> sandwich_material(const std::string& name, const std::string& cortex, const std::string& section) {
+    const auto& sec = g_.shell_sections.at(section);
+    const EquivalentPlate eq = sandwich_plate(sec.total_thickness, sec.cortical);
+    FeMaterial m = convert(g_.material(cortex), name);
+    const double T = sec.total_thickness, tc = std::min(sec.cortical, T / 2);
+    m.E *= eq.modulus_scale;
+    m.rho = (2 * tc * m.rho + (T - 2 * tc) * sec.core_density * kDensity) / eq.thickness;
+    m.source += "; sandwich-equivalent thickness, modulus and density (shell_sections.csv)";
+    return {m_.add_material(m), eq.thickness};
   }
   int part(const std::string& name, ElementKind kind, int mat, const std::string& segment, const std::string& region,
            double thickness = 0) {
@@ -528,18 +552,7 @@ void Builder::build_ribcage() {
     }
   }
   // Sternum: front cells from the rib-1 band to the rib-7 band.
-  const auto& ss = g_.shell_sections.at("sternum");
-  double T = ss.total_thickness, tc = ss.cortical;
-  // Sandwich plate (two cortices tc, core): per unit width I = (T^3 - (T - 2 tc)^3) / 12,
-  // A = 2 tc; equivalent shell t = sqrt(12 I / A), E_eq = E A / t, density keeps the mass.
-  double Iw = (T * T * T - std::pow(T - 2 * tc, 3)) / 12, Aw = 2 * tc;
-  double teq = std::sqrt(12 * Iw / Aw);
-  FeMaterial sm = convert(g_.material("sternum_cortical"), "sternum");
-  double rho_c = sm.rho, rho_core = ss.core_density * kDensity;
-  sm.E *= Aw / teq;
-  sm.rho = (2 * tc * rho_c + (T - 2 * tc) * rho_core) / teq;
-  sm.source += "; sandwich-equivalent thickness, modulus and density (shell_sections.csv)";
-  int smi = m_.add_material(sm);
+  const auto [smi, teq] = sandwich_material("sternum", "sternum_cortical", "sternum");
   int sp = part("sternum", ElementKind::Tria, smi, "thorax", "sternum", teq);
   int l1 = layer_of_body("T1"), l7 = layer_of_body("T7");
   for (int l = l7; l <= l1; ++l)
@@ -560,9 +573,13 @@ void Builder::build_ribcage() {
 
 void Builder::build_pelvis() {
   const int N = torso_->n(), half = N / 2;
-  const auto& pc = g_.shell_sections.at("pelvis_cortex");
-  int cortex = part("pelvis_cortex", ElementKind::Shell, material("pelvis_cortical"), "pelvis", "pelvis", pc.total_thickness);
-  int joint_part = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", pc.total_thickness);
+  // Pelvic bone: a sandwich plate of two cortices over a trabecular core (shell_sections.csv).
+  const auto [cortex_mat, cortex_t] = sandwich_material("pelvis_cortical", "pelvis_cortical", "pelvis_cortex");
+  int cortex = part("pelvis_cortex", ElementKind::Shell, cortex_mat, "pelvis", "pelvis", cortex_t);
+  // Sacroiliac joints and pubic symphysis: bands of shells of the fibrocartilage's modulus,
+  // one ring cell long across the joint (shell_sections.csv pelvic_joints).
+  const auto& js = g_.shell_sections.at("pelvic_joints");
+  int joint_part = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", js.total_thickness);
   const double z_pubis = g_.pelvis.at("pubic_symphysis").z(), z_isch = g_.pelvis.at("ischial_tuberosity_r").z();
   const double z_crest = std::max(g_.pelvis.at("asis_r").z(), g_.pelvis.at("iliac_tubercle_r").z());
   for (int l = 0; l + 1 < torso_->levels(); ++l) {

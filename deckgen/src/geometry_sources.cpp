@@ -313,11 +313,11 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
       t.fail(r, "cortical_mm", "cortex thicker than half the section");
     out[t.text(r, "name")] = s;
   }
-  for (const char* need : {"sternum", "costal_cartilage", "clavicle", "pelvis_cortex", "skin", "envelope"})
+  for (const char* need : {"sternum", "costal_cartilage", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope"})
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("section '") + need + "' is missing");
   const ShellSection& cc = out["costal_cartilage"];
   if (cc.height <= 0 || cc.width <= 0) throw SourceError(file, cc.line, "height_mm", "costal cartilage needs height and width");
-  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "skin", "envelope"})
+  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope"})
     if (out[need].total_thickness <= 0) throw SourceError(file, out[need].line, "total_thickness_mm", std::string(need) + " needs a thickness > 0");
   return out;
 }

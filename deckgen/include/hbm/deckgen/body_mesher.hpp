@@ -47,4 +47,15 @@ double equivalent_rib_thickness(double height, double width, double cortical, do
 double hollow_ellipse_area(double height, double width, double cortical);
 double hollow_ellipse_inertia(double height, double width, double cortical);
 
+// Sandwich plate (two cortices tc on a core, total thickness T) as one shell: per unit width
+// I = (T^3 - (T - 2 tc)^3) / 12 and A = 2 tc of the cortices; a shell of thickness
+// t = sqrt(12 I / A) and modulus E A / t (modulus_scale = A / t) has the cortices' membrane
+// and bending stiffness. A core of no stiffness carries only mass; tc >= T / 2 is a solid plate
+// (t = T, modulus unchanged).
+struct EquivalentPlate {
+  double thickness = 0;      // t (mm)
+  double modulus_scale = 0;  // E_eq / E_cortex
+};
+EquivalentPlate sandwich_plate(double total, double cortical);
+
 }  // namespace hbm::deckgen
