@@ -316,6 +316,10 @@ TimeStepReport time_step_check(const FeModel& m, double tsca, double tmin) {
     const auto& t = m.trias[e];
     std::vector<V3> pts{X(m, t[0]), X(m, t[1]), X(m, t[2])};
     double L = 2 * tri_area(pts[0], pts[1], pts[2]) / max_side(pts);
+    // A triangle thicker than its size is bound by its flexural step L^2 / (c t), as the
+    // solver's DKT kernel takes it (shell_tria_dkt.cpp): the length that gives the step is
+    // min(L, L^2 / t).
+    L = std::min(L, L * L / shell_t(m, p, m.tria_thick[e]));
     element(p, t.data(), 3, L, mat_of(m, p).plate_wave_speed(), element_mass(m, ElementKind::Tria, e));
   }
   for (std::size_t e = 0; e < m.springs.size(); ++e) {
@@ -503,7 +507,7 @@ bool print_budget(std::ostream& os, const std::vector<BudgetRow>& rows, std::siz
 bool print_time_step(std::ostream& os, const TimeStepReport& r, double max_added_ratio) {
   os.unsetf(std::ios::floatfield);
   os << std::setprecision(6);
-  os << "Time step at t = 0 (Tsca " << r.tsca << ", Tmin " << r.tmin * 1e3 << " us; dt = L/c per element)\n";
+  os << "Time step at t = 0 (Tsca " << r.tsca << ", Tmin " << r.tmin * 1e3 << " us; dt = L/c per element, L^2/(c t) for SH3N thicker than L)\n";
   os << "  " << std::left << std::setw(26) << "part" << std::right << std::setw(12) << "dt_min[us]" << std::setw(10) << "L[mm]"
      << std::setw(8) << "below" << std::setw(14) << "added[g]" << "\n";
   bool ok = true;

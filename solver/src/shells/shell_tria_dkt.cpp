@@ -425,7 +425,13 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         f4[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exy + my * eyy) : 0.0;
         f5[3 * l + static_cast<std::size_t>(i)] = ok ? -(mx * exz + my * eyz) : 0.0;
       }
-    // Stable step 2A / longest side / c on the current geometry.
+    // Stable step on the current geometry: min(l_c, l_c^2 / t) / c, l_c = 2A / longest side.
+    // l_c / c is the membrane step; l_c^2 / (c t) the flexural one of a plate thicker than its
+    // cell. With lumped masses the highest bending mode (transverse displacement alternating
+    // from node to node, curvature ~ 8 w / l^2) has omega^2 = 64 D / (rho t l^4) =
+    // 16/3 c^2 t^2 / l^4: a step 2 / omega = 0.87 l^2 / (c t), below l / c once t > 0.87 l.
+    // Rings of triangles 1.3-4 l_c thick run stable up to 1.5-2 l_c^2 / (c t) and blow up at
+    // the membrane step (ctest/solver/shells_thick_plate_verification.cpp).
     for (std::size_t l = 0; l < n; ++l) {
       double lmax2 = 0;
       for (int i = 0; i < 3; ++i) {
@@ -437,7 +443,10 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       b.lmax2[l] = lmax2 > 0.0 ? lmax2 : 1.0;
     }
     for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
-    for (std::size_t l = 0; l < n; ++l) b.dte[l] = 2.0 * b.A[l] / b.lmax2[l] / cwave;
+    for (std::size_t l = 0; l < n; ++l) {
+      const double lc = 2.0 * b.A[l] / b.lmax2[l];
+      b.dte[l] = std::min(lc, lc * lc / b.th.t[l]) / cwave;
+    }
     g.use_frozen_steps(b.dte, idx, n);
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state
     // (masked lanes: zero slots; deleted elements no step; degenerate ones keep their
