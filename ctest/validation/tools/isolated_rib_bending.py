@@ -454,9 +454,10 @@ def channel(columns, path, name, unit):
     return [v * factor for v in values]
 
 
-def run_solver(solver, starter, spec):
-    """Runs hbm-solver on the deck (one thread) and reads the pot force and the end-to-end
-    displacement from its /TH/RBODY and /TH/NODE files."""
+def run_hbm_solver(solver, starter):
+    """Runs hbm-solver on the deck (one thread) into the folder out/ beside it; its printed
+    output is kept there in solver_output.txt. Returns (out folder, termination line, wall
+    time in s); InputError when the solver cannot be run or does not end normally."""
     out = os.path.join(os.path.dirname(starter), "out")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
@@ -475,7 +476,13 @@ def run_solver(solver, starter, spec):
     if r.returncode != 0 or termination != "NORMAL TERMINATION":
         tail = "\n  ".join((r.stdout + r.stderr).strip().splitlines()[-8:]) or "(no output)"
         raise InputError(f"{listing}: hbm-solver on {starter} exited {r.returncode} ({termination}):\n  {tail}")
+    return out, termination, wall
 
+
+def run_solver(solver, starter, spec):
+    """Runs hbm-solver on the deck and reads the pot force and the end-to-end displacement
+    from its /TH/RBODY and /TH/NODE files."""
+    out, termination, wall = run_hbm_solver(solver, starter)
     rbody_csv = os.path.join(out, f"{spec.name}_TH_RBODY_1.csv")
     node_csv = os.path.join(out, f"{spec.name}_TH_NODE_2.csv")
     rbody, nodes = read_time_history(rbody_csv), read_time_history(node_csv)
