@@ -51,7 +51,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from isolated_rib_bending import (ArgumentParser, Card, InputError, centroid, channel,  # noqa: E402
                                   file_digest, fitted_slope, fmt, ids_in_rows_of_10, in_repo,
                                   interpolate, mean, node_line, ratio, read_model, read_time_history,
-                                  run_hbm_solver)
+                                  run_hbm_solver, DriveSchedule, starter_head, write_deck_pair,
+                                  FIXED_STEP_MS, RAMP_STROKE_MM)
 
 TOOL = "ctest/validation/tools/isolated_pelvis_lateral.py"
 REPO_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
@@ -66,9 +67,6 @@ DRIVEN_BODY = "acetabulum_l"
 POT_ID, DRIVEN_ID = 90001, 90002
 COMPARE_AT_MM = (1.0, 2.0, 3.0, 5.0)
 STIFFNESS_FIT_MM = (0.5, 2.5)
-RAMP_STROKE_MM = 0.5                 # the velocity ramps up linearly over this stroke
-SAMPLE_STROKE_MM = 0.01              # time-history output every 0.01 mm of stroke
-FIXED_STEP_MS = 1.5e-3
 PLATE_STROKE_MM = 3.0                # past the end of the stiffness fit
 PLATE_TOLERANCE = 0.03
 
@@ -265,12 +263,8 @@ PLATES = (Plate("bending", length_mm=60.0), Plate("tension", length_mm=300.0, ce
 # ---------------------------------------------------------------- deck writer
 def write_deck(folder, spec, speed):
     """Starter and engine files of the test (module docstring); returns the starter path."""
-    os.makedirs(folder, exist_ok=True)
-    ramp_ms = 2.0 * RAMP_STROKE_MM / speed
-    tstop = spec.stroke_mm / speed + ramp_ms / 2.0  # the ramp covers half the stroke of full speed
-    lines = ["#RADIOSS STARTER"] + ["# " + h for h in spec.header]
-    lines += ["/BEGIN", spec.name, "      2024         0", f"{'kg':>20}{'mm':>20}{'ms':>20}",
-              f"{'kg':>20}{'mm':>20}{'ms':>20}", "/NODE"]
+    schedule = DriveSchedule(spec.stroke_mm, speed)
+    lines = starter_head(spec.name, spec.header)
     lines += [node_line(n, spec.nodes[n]) for n in sorted(spec.nodes)]
     for card in spec.cards:
         lines += [card.key] + card.lines
@@ -283,22 +277,13 @@ def write_deck(folder, spec, speed):
     if spec.guided:
         lines += [f"/BCS/{DRIVEN_ID}", "driven body guided along Y: X Z fixed, rotations free",
                   f"   101 000{0:10d}{DRIVEN_ID:10d}"]
-    lines += [f"/FUNCT/{POT_ID}", "velocity ramp", f"{0.0:20.10E}{0.0:20.10E}", f"{ramp_ms:20.10E}{1.0:20.10E}",
-              f"{max(10 * tstop, 1000.0):20.10E}{1.0:20.10E}"]
+    lines += schedule.funct_lines(POT_ID)
     lines += [f"/IMPVEL/{POT_ID}", "driven body along -Y", f"{POT_ID:10d}{'Y':>10}{0:10d}{0:10d}{DRIVEN_ID:10d}",
               f"{1.0:20.10E}{-speed:20.10E}{0.0:20.10E}{0.0:20.10E}"]
     lines += ["/TH/RBODY/1", "driven body", "".join(f"{c:>10}" for c in ("FX", "FY", "FZ")), f"{driven_body_id:10d}",
               "/TH/NODE/2", "driven main node", "".join(f"{c:>10}" for c in ("DX", "DY", "DZ")),
               f"{spec.driven.main:10d}{0:10d}driven", "/END"]
-    starter = os.path.join(folder, spec.name + "_0000.rad")
-    with open(starter, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    engine = ["#RADIOSS ENGINE", f"/RUN/{spec.name}/1", f"{tstop:g}", "/TFILE/4", f"{SAMPLE_STROKE_MM / speed:g}",
-              "/PRINT/-5000", "# fixed step 1.5 us with nodal mass scaling, as the whole model is run",
-              "/DT/NODA/CST/0", f"0.9 {FIXED_STEP_MS:g}", "/DT/SHELL/CST", f"0.9 {FIXED_STEP_MS:g}"]
-    with open(os.path.join(folder, spec.name + "_0001.rad"), "w") as f:
-        f.write("\n".join(engine) + "\n")
-    return starter
+    return write_deck_pair(folder, spec.name, lines, schedule, speed, 5000)
 
 
 # ---------------------------------------------------------------- solver run

@@ -350,14 +350,47 @@ def node_line(nid, x):
     return f"{nid:10d}{x[0]:20.10E}{x[1]:20.10E}{x[2]:20.10E}"
 
 
+class DriveSchedule:
+    """End time and velocity ramp of a test driven at `speed` over `stroke_mm`: the
+    velocity ramps up linearly over the first RAMP_STROKE_MM of stroke."""
+
+    def __init__(self, stroke_mm, speed):
+        self.ramp_ms = 2.0 * RAMP_STROKE_MM / speed
+        self.tstop = stroke_mm / speed + self.ramp_ms / 2.0  # the ramp covers half the stroke of full speed
+
+    def funct_lines(self, funct_id):
+        """/FUNCT card of the ramp (0 -> 1 over ramp_ms, then 1)."""
+        return [f"/FUNCT/{funct_id}", "velocity ramp", f"{0.0:20.10E}{0.0:20.10E}", f"{self.ramp_ms:20.10E}{1.0:20.10E}",
+                f"{max(10 * self.tstop, 1000.0):20.10E}{1.0:20.10E}"]
+
+
+def starter_head(name, header):
+    """First lines of a starter deck: comments, /BEGIN (units kg, mm, ms), /NODE."""
+    lines = ["#RADIOSS STARTER"] + ["# " + h for h in header]
+    return lines + ["/BEGIN", name, "      2024         0", f"{'kg':>20}{'mm':>20}{'ms':>20}",
+                    f"{'kg':>20}{'mm':>20}{'ms':>20}", "/NODE"]
+
+
+def write_deck_pair(folder, name, starter_lines, schedule, speed, print_every):
+    """Writes NAME_0000.rad (the given lines) and NAME_0001.rad (end time, time histories
+    every SAMPLE_STROKE_MM of stroke, the fixed step of the whole-model runs); returns the
+    starter path."""
+    os.makedirs(folder, exist_ok=True)
+    starter = os.path.join(folder, name + "_0000.rad")
+    with open(starter, "w") as f:
+        f.write("\n".join(starter_lines) + "\n")
+    engine = ["#RADIOSS ENGINE", f"/RUN/{name}/1", f"{schedule.tstop:g}", "/TFILE/4", f"{SAMPLE_STROKE_MM / speed:g}",
+              f"/PRINT/-{print_every}", "# fixed step 1.5 us with nodal mass scaling, as the whole model is run",
+              "/DT/NODA/CST/0", f"0.9 {FIXED_STEP_MS:g}", "/DT/SHELL/CST", f"0.9 {FIXED_STEP_MS:g}"]
+    with open(os.path.join(folder, name + "_0001.rad"), "w") as f:
+        f.write("\n".join(engine) + "\n")
+    return starter
+
+
 def write_deck(folder, spec, speed):
     """Starter and engine files of the test (module docstring); returns the starter path."""
-    os.makedirs(folder, exist_ok=True)
-    ramp_ms = 2.0 * RAMP_STROKE_MM / speed
-    tstop = spec.stroke_mm / speed + ramp_ms / 2.0  # the ramp covers half the stroke of full speed
-    lines = ["#RADIOSS STARTER"] + ["# " + h for h in spec.header]
-    lines += ["/BEGIN", spec.name, "      2024         0", f"{'kg':>20}{'mm':>20}{'ms':>20}",
-              f"{'kg':>20}{'mm':>20}{'ms':>20}", "/NODE"]
+    schedule = DriveSchedule(spec.stroke_mm, speed)
+    lines = starter_head(spec.name, spec.header)
     lines += [node_line(n, spec.nodes[n]) for n in sorted(spec.nodes)]
     lines.append(node_line(POSTERIOR_MAIN, centroid([spec.nodes[n] for n in spec.posterior_nodes])))
     lines.append(node_line(ANTERIOR_MAIN, centroid([spec.nodes[n] for n in spec.anterior_nodes])))
@@ -379,8 +412,7 @@ def write_deck(folder, spec, speed):
               f"   111 110{0:10d}{3:10d}",
               "/BCS/2", "anterior pot: Y Z fixed, free rotation about Z, X driven",
               f"   011 110{0:10d}{4:10d}"]
-    lines += ["/FUNCT/1", "velocity ramp", f"{0.0:20.10E}{0.0:20.10E}", f"{ramp_ms:20.10E}{1.0:20.10E}",
-              f"{max(10 * tstop, 1000.0):20.10E}{1.0:20.10E}"]
+    lines += schedule.funct_lines(1)
     lines += ["/IMPVEL/1", "anterior pot towards the posterior pot", f"{1:10d}{'X':>10}{0:10d}{0:10d}{4:10d}",
               f"{1.0:20.10E}{speed:20.10E}{0.0:20.10E}{0.0:20.10E}"]
     lines += ["/TH/RBODY/1", "pots", "".join(f"{c:>10}" for c in ("FX", "FY", "FZ", "MX", "MY", "MZ", "KE")),
@@ -389,15 +421,7 @@ def write_deck(folder, spec, speed):
               f"{POSTERIOR_MAIN:10d}{0:10d}posterior", f"{ANTERIOR_MAIN:10d}{0:10d}anterior",
               "/TH/PART/3", spec.part_title, "".join(f"{c:>10}" for c in ("IE", "KE", "HE")), f"{1:10d}",
               "/END"]
-    starter = os.path.join(folder, spec.name + "_0000.rad")
-    with open(starter, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    engine = ["#RADIOSS ENGINE", f"/RUN/{spec.name}/1", f"{tstop:g}", "/TFILE/4", f"{SAMPLE_STROKE_MM / speed:g}",
-              "/PRINT/-2000", "# fixed step 1.5 us with nodal mass scaling, as the whole model is run",
-              "/DT/NODA/CST/0", f"0.9 {FIXED_STEP_MS:g}", "/DT/SHELL/CST", f"0.9 {FIXED_STEP_MS:g}"]
-    with open(os.path.join(folder, spec.name + "_0001.rad"), "w") as f:
-        f.write("\n".join(engine) + "\n")
-    return starter
+    return write_deck_pair(folder, spec.name, lines, schedule, speed, 2000)
 
 
 # ---------------------------------------------------------------- solver run and time histories
