@@ -4,7 +4,7 @@
 
 #include "output/units.hpp"
 
-#include <cstdio>
+#include <charconv>
 
 namespace hbm::solver {
 
@@ -48,22 +48,27 @@ bool ThWriter::open(const std::filesystem::path& file, const ThGroup& group, con
 }
 
 void ThWriter::write_row(double time, const GlobalEnergies& e) {
-  char buf[64];
+  // One row built in a buffer and written at once. std::to_chars with scientific format and
+  // precision 9 writes what printf's "%.9e" writes (C locale), a few times faster: a
+  // /TH/PART row of every part holds some 300 values and is written every few cycles.
+  row_.clear();
   auto put = [&](double v) {
-    std::snprintf(buf, sizeof buf, "%.9e", v);
-    out_ << buf;
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific, 9);
+    row_.append(buf, r.ptr);
   };
   put(time);
   for (double v : {e.kinetic + e.rotational, e.internal, e.hourglass, e.contact, e.external_work, e.added_mass,
                    e.mass_ratio(), e.energy_error()}) {
-    out_ << ",";
+    row_ += ',';
     put(v);
   }
   for (const ThProbe& p : group_->columns) {
-    out_ << ",";
+    row_ += ',';
     put(p.read());
   }
-  out_ << "\n";
+  row_ += '\n';
+  out_.write(row_.data(), static_cast<std::streamsize>(row_.size()));
   out_.flush();
 }
 

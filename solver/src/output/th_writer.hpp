@@ -24,6 +24,7 @@ class ThWriter {
   std::filesystem::path path_;
   std::ofstream out_;
   const ThGroup* group_ = nullptr;
+  std::string row_;  // the row being written (kept: its capacity is reused)
 };
 
 // File name of a group: <run>_TH_<KIND>_<id>.csv, e.g. impact_TH_NODE_1.csv.
