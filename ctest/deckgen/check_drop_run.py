@@ -13,7 +13,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation", "tools"))
-from validation_report import global_history, part_hourglass_end  # noqa: E402
+from validation_report import global_history, part_hourglass_end, run_health  # noqa: E402
 
 LIMITS = {"energy error": 2.0, "added mass": 1.0, "hourglass / internal": 10.0}  # per cent
 
@@ -32,11 +32,12 @@ def main():
         print(f"{work}: no time history")
         return 1
     ie, he = h["internal energy"], h["hourglass energy"]
-    peak = max(ie)
-    ratios = [100 * b / a for a, b in zip(ie, he) if a > 0.1 * peak]
-    got = {"energy error": 100 * max(abs(e) for e in h["energy error"]),
-           "added mass": 100 * h["mass ratio"][-1],
-           "hourglass / internal": max(ratios + [100 * he[-1] / ie[-1]])}
+    health = run_health(h)
+    if health["hg_end"] is None:
+        print(f"{work}: no internal energy at the end of the drop (nothing deformed?)")
+        return 1
+    got = {"energy error": health["energy_err"], "added mass": health["added"],
+           "hourglass / internal": max(health["hg_end"], health["hg_max"] or 0.0)}
     print(f"drop deck, {h['time'][-1]:.2f} ms: internal {ie[-1]:.2f} J, hourglass {he[-1]:.2f} J; "
           + ", ".join(f"{k} {v:.3f} % (limit {LIMITS[k]} %)" for k, v in got.items()))
     print("parts with most hourglass energy (HE / IE, J): "

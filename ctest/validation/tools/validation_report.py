@@ -70,6 +70,20 @@ def global_history(run_dir):
     return data
 
 
+def run_health(gh):
+    """Per-cent figures of a run's global history (global_history): largest |energy error|,
+    added mass at the end, hourglass / internal energy at the end (None if no internal
+    energy) and its largest value over the times when the internal energy exceeds 10 % of
+    its peak (None if there are none)."""
+    ie, he = gh["internal energy"], gh["hourglass energy"]
+    ie_max = max(abs(x) for x in ie) if ie else 0
+    ratios = [100 * h / i for h, i in zip(he, ie) if ie_max > 0 and i > 0.1 * ie_max]
+    return {"energy_err": 100 * max(abs(e) for e in gh["energy error"]),
+            "added": 100 * gh["mass ratio"][-1],
+            "hg_end": 100 * he[-1] / ie[-1] if ie[-1] > 0 else None,
+            "hg_max": max(ratios) if ratios else None}
+
+
 def part_hourglass_end(run_dir, top=3):
     """The parts with the largest hourglass energy at the last row of the part time history
     (/TH/PART columns 'part N name HE [J]'), with their internal energy: [(name, HE, IE)]."""
@@ -166,13 +180,7 @@ def main():
              "threads": lf.get("threads_used", kv.get("threads", "-")), **lf}
         if gh and gh["time"]:
             r["t_end"] = gh["time"][-1]
-            r["energy_err"] = 100 * max(abs(e) for e in gh["energy error"])
-            r["added"] = 100 * gh["mass ratio"][-1]
-            ie, he = gh["internal energy"], gh["hourglass energy"]
-            ie_max = max(abs(x) for x in ie) if ie else 0
-            ratios = [100 * h / i for h, i in zip(he, ie) if ie_max > 0 and i > 0.1 * ie_max]
-            r["hg_end"] = 100 * he[-1] / ie[-1] if ie[-1] > 0 else None
-            r["hg_max"] = max(ratios) if ratios else None
+            r.update(run_health(gh))
         r["hg_parts"] = part_hourglass_end(run_dir) if os.path.isdir(run_dir) else []
         runs.append(r)
         lc = os.path.join(a.work, "runs", f"{c}.loadcase.txt")
