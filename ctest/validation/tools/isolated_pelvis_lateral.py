@@ -52,6 +52,7 @@ from isolated_rib_bending import (ArgumentParser, Card, InputError, centroid, ch
                                   file_digest, fitted_slope, fmt, ids_in_rows_of_10, in_repo,
                                   interpolate, mean, node_line, ratio, read_model, read_time_history,
                                   run_hbm_solver, DriveSchedule, starter_head, write_deck_pair,
+                                  positive_number, tool_main,
                                   FIXED_STEP_MS, RAMP_STROKE_MM)
 
 TOOL = "ctest/validation/tools/isolated_pelvis_lateral.py"
@@ -575,8 +576,8 @@ def parse_args(argv):
     ap.add_argument("--work", required=True, help="folder for the decks and runs")
     ap.add_argument("--guillemot", default=DEFAULT_GUILLEMOT,
                     help=f"Guillemot 1998 files (default {DEFAULT_GUILLEMOT})")
-    ap.add_argument("--speed", type=float, default=0.05, help="acetabulum speed [mm/ms] (default 0.05, quasi-static)")
-    ap.add_argument("--stroke", type=float, default=10.0, help="acetabulum stroke [mm] (default 10)")
+    ap.add_argument("--speed", type=positive_number, default=0.05, help="acetabulum speed [mm/ms] (default 0.05, quasi-static)")
+    ap.add_argument("--stroke", type=positive_number, default=10.0, help="acetabulum stroke [mm] (default 10)")
     guide = ap.add_mutually_exclusive_group()
     guide.add_argument("--guided", dest="guided", action="store_true", default=True,
                        help="fix the driven acetabulum's X and Z translations (default)")
@@ -587,8 +588,6 @@ def parse_args(argv):
     args = ap.parse_args(argv)
     if not args.model and not args.check_plate:
         ap.error("--model is needed to run the pelvis (or give --check-plate)")
-    if args.speed <= 0:
-        ap.error("--speed must be positive")
     if args.stroke <= STIFFNESS_FIT_MM[1]:
         ap.error(f"--stroke must pass the end of the stiffness fit ({STIFFNESS_FIT_MM[1]:g} mm)")
     return args
@@ -621,12 +620,7 @@ def run(args):
 
 
 def main(argv=None):
-    args = parse_args(argv)
-    try:
-        return run(args)
-    except InputError as e:
-        print(f"{os.path.basename(__file__)}: error: {e}", file=sys.stderr)
-        return 1
+    return tool_main(parse_args, run, argv)
 
 
 if __name__ == "__main__":

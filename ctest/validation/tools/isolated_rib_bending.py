@@ -790,13 +790,35 @@ class ArgumentParser(argparse.ArgumentParser):
         self.exit(1, f"{self.prog}: error: {message}\n")
 
 
+def positive_number(text):
+    """argparse type: a finite number > 0 (a speed or a stroke that a deck can hold)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"'{text}' is not a finite number > 0")
+    return value
+
+
+def tool_main(parse_args, run, argv=None):
+    """Command-line entry of a component tool: exit status of run(args), or 1 with the
+    message of an InputError (bad input or a failed run)."""
+    args = parse_args(argv)
+    try:
+        return run(args)
+    except InputError as e:
+        print(f"{os.path.basename(sys.argv[0])}: error: {e}", file=sys.stderr)
+        return 1
+
+
 def parse_args(argv):
     ap = ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--solver", required=True, help="hbm-solver executable")
     ap.add_argument("--model", help="body model include (decks/hbm50/hbm50.inc); needed to run ribs")
     ap.add_argument("--work", required=True, help="folder for the decks and runs")
     ap.add_argument("--ribs", nargs="+", type=int, help="rib levels (default 2-10; none with --check-ring alone)")
-    ap.add_argument("--speed", type=float, default=0.1, help="pot speed [mm/ms] (default 0.1, quasi-static)")
+    ap.add_argument("--speed", type=positive_number, default=0.1, help="pot speed [mm/ms] (default 0.1, quasi-static)")
     ap.add_argument("--kindig", default=DEFAULT_KINDIG, help=f"Kindig 2009 files (default {DEFAULT_KINDIG})")
     ap.add_argument("--report", help="write a Markdown report here")
     ap.add_argument("--check-ring", action="store_true",
@@ -806,8 +828,6 @@ def parse_args(argv):
         args.ribs = list(range(2, 11))
     if args.ribs and not args.model:
         ap.error("--model is needed to run ribs")
-    if args.speed <= 0:
-        ap.error("--speed must be positive")
     return args
 
 
@@ -841,12 +861,7 @@ def run(args):
 
 
 def main(argv=None):
-    args = parse_args(argv)
-    try:
-        return run(args)
-    except InputError as e:
-        print(f"{os.path.basename(__file__)}: error: {e}", file=sys.stderr)
-        return 1
+    return tool_main(parse_args, run, argv)
 
 
 if __name__ == "__main__":
