@@ -23,7 +23,8 @@ struct DropTest {
   double speed = 5.0;          // m/s = mm/ms, downwards (-z)
   double end_time = 20.0;      // ms
   double floor_clearance = 1.0;  // mm below the lowest node
-  double tsca = 0.9, tmin = 1.5e-3;  // /DT/NODA/CST
+  double tsca = 0.9, tmin = 1.5e-3;  // /DT/NODA/CST, /DT/SHELL/CST, /DT/BRICK/CST
+  double brick_vdef_min = 0.3;  // /DT/BRICK/CST/1: a brick squeezed to this volume ratio switches too
   double dm_max = 0.01;        // /STOP added-mass ratio
 };
 
