@@ -16,6 +16,8 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +94,20 @@ inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << "cannot open " << path;
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The listing's ELEMENTS SWITCHED TO SMALL STRAIN line of a part, e.g. "  /SHELL part 1
+// 'skin': 1 of 1": the time after ", at " (all its elements switched at one sampling time)
+// or after ", from " (the first); NaN if the line or the time is missing.
+inline double switch_time_in_listing(const std::string& listing, const std::string& part_line) {
+  const auto at = listing.find(part_line);
+  if (at == std::string::npos) return std::nan("");
+  const std::string line = listing.substr(at, listing.find('\n', at) - at);
+  for (const char* key : {", at ", ", from "}) {
+    const auto k = line.find(key);
+    if (k != std::string::npos) return std::strtod(line.c_str() + k + std::strlen(key), nullptr);
+  }
+  return std::nan("");
 }
 
 // Run hbm-solver on decks/examples/<name>/<name>_0000.rad (extra command-line arguments

@@ -103,8 +103,13 @@ TEST(ShellSmallStrainSwitchDeck, FoldedQuadRunsToTheEndWithConstantAddedMass) {
   for (const auto& row : th.rows) EXPECT_LT(std::abs(row[ce]), 5e-3) << "t = " << row[ct];
   EXPECT_LT(std::abs(last[ce]), 1e-4);
   const std::string listing = t::read_text(starter.parent_path() / "out" / "shell_fold_small_strain_0001.out");
-  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN\n  /SHELL part 1 'skin': 1 of 1\n"), std::string::npos)
+  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN (first and last switch, ms)\n  /SHELL part 1 'skin': 1 of 1, at "),
+            std::string::npos)
       << listing;
+  // The listing's switch time: the first time-history sample (15 us apart) at or after it.
+  const double tl = t::switch_time_in_listing(listing, "/SHELL part 1 'skin': 1 of 1");
+  EXPECT_GE(tl, ts - 1e-9) << listing;
+  EXPECT_LE(tl, ts + 0.015 + 1e-9) << listing;
 }
 
 TEST(ShellSmallStrainSwitchDeck, WithoutTheSwitchTheAddedMassStopsTheRun) {
@@ -160,8 +165,12 @@ TEST(ShellSmallStrainSwitchDeck, FoldedTriangleRunsToTheEndWithConstantAddedMass
   EXPECT_LE(t_const, ts + 0.02 + 1e-9);
   for (const auto& row : th.rows) EXPECT_LT(std::abs(row[ce]), 5e-3) << "t = " << row[0];
   const std::string listing = t::read_text(starter.parent_path() / "out" / (name + "_0001.out"));
-  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN\n  /SH3N part 1 'skin': 1 of 1\n"), std::string::npos)
+  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN (first and last switch, ms)\n  /SH3N part 1 'skin': 1 of 1, at "),
+            std::string::npos)
       << listing;
+  const double tl = t::switch_time_in_listing(listing, "/SH3N part 1 'skin': 1 of 1");
+  EXPECT_GE(tl, ts - 1e-9) << listing;
+  EXPECT_LE(tl, ts + 0.02 + 1e-9) << listing;
 }
 
 TEST(ShellSmallStrainSwitchDeck, WithoutTheSwitchTheTriangleStopsTheRun) {

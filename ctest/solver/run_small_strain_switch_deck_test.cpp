@@ -60,8 +60,18 @@ TEST(SmallStrainSwitchDeck, CrushedBrickRunsToTheEnd) {
   EXPECT_NEAR(th.rows.back()[dz], -10.0 * t_end, 1e-6) << "the top face went 0.5 mm below the fixed bottom face";
   const std::string listing =
       hbm::solver::testing::read_text(starter.parent_path() / "out" / "inverted_element_0001.out");
-  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN\n  /BRICK part 1 'cube': 1 of 1\n"), std::string::npos)
+  EXPECT_NE(listing.find("ELEMENTS SWITCHED TO SMALL STRAIN (first and last switch, ms)\n  /BRICK part 1 'cube': 1 of 1, at "),
+            std::string::npos)
       << listing;
+  // The top face at -10 t with its corners free sideways: V/V0 >= 1 + DZ, so VDEF_min 0.3
+  // cannot be reached before DZ = -0.7 mm (t = 0.07 ms). The listing's time is a cycle's time
+  // (every cycle is written to the time history here: steps of 4-18 us, interval 1 us).
+  const double ts = hbm::solver::testing::switch_time_in_listing(listing, "/BRICK part 1 'cube': 1 of 1");
+  EXPECT_GE(ts, 0.07 - 5e-4) << listing;
+  EXPECT_LT(ts, t_end) << listing;
+  bool at_a_cycle = false;
+  for (const auto& row : th.rows) at_a_cycle = at_a_cycle || std::abs(row[t] - ts) <= 5e-4;  // printed to 1 us
+  EXPECT_TRUE(at_a_cycle) << ts;
 }
 
 TEST(SmallStrainSwitchDeck, WithoutTheSwitchTheSlowCrushInverts) {

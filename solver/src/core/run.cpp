@@ -162,6 +162,22 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   const double cpu0 = process_cpu_seconds();
   double output_seconds = 0.0;
   Vec3Soa vel_out;
+  // When each group's elements switched to small strain (first and last sampling time at
+  // which its count grew; sampled with the time histories, or every listing line).
+  struct SwitchTimes {
+    std::size_t count = 0;
+    double first = -1.0, last = -1.0;
+  };
+  std::vector<SwitchTimes> switched(model.groups.size());
+  auto sample_switches = [&](double t) {
+    for (std::size_t g = 0; g < model.groups.size(); ++g) {
+      const std::size_t n = model.groups[g]->n_small_strain();
+      if (n == switched[g].count) continue;
+      if (switched[g].count == 0) switched[g].first = t;
+      switched[g].last = t;
+      switched[g].count = n;
+    }
+  };
   for (;;) {
     const auto cycle0 = Clock::now();
 #ifdef _OPENMP
@@ -211,6 +227,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
     // Outputs at t^n.
     const auto o0 = Clock::now();
     if (rc.th_interval > 0 && (t >= next_th - tol || stopping)) {
+      sample_switches(t);
       for (auto& w : th) w->write_row(t, c.energies);
       while (next_th <= t + tol) next_th += rc.th_interval;
     }
@@ -227,6 +244,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       while (next_anim <= t + tol) next_anim += rc.anim_interval;
     }
     if (c.step.cycle % rc.print_every == 0 || stopping) {
+      if (rc.th_interval <= 0) sample_switches(t);
       const double wall = std::chrono::duration<double>(Clock::now() - wall0).count();
       const double eta = t > 0 ? wall * (rc.t_stop - t) / t : 0.0;
       char b[256];
@@ -343,14 +361,19 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   // frozen from the switch on, so the user needs to know where.
   {
     bool header = false;
-    for (const auto& gp : model.groups) {
-      const std::size_t n = gp->n_small_strain();
+    for (std::size_t g = 0; g < model.groups.size(); ++g) {
+      const ElementGroup& gp = *model.groups[g];
+      const std::size_t n = gp.n_small_strain();
       if (n == 0) continue;
-      if (!header) listing.line("ELEMENTS SWITCHED TO SMALL STRAIN");
+      if (!header) listing.line("ELEMENTS SWITCHED TO SMALL STRAIN (first and last switch, " + tu + ")");
       header = true;
-      const Part& p = model.parts[static_cast<std::size_t>(gp->part)];
-      listing.line("  " + gp->keyword + " part " + std::to_string(p.id) + " '" + p.title + "': " + std::to_string(n) +
-                   " of " + std::to_string(gp->n_elements));
+      const Part& p = model.parts[static_cast<std::size_t>(gp.part)];
+      std::string when;
+      if (switched[g].first >= 0)
+        when = switched[g].first == switched[g].last ? ", at " + fmt("%.3f", switched[g].first)
+                                                     : ", from " + fmt("%.3f", switched[g].first) + " to " + fmt("%.3f", switched[g].last);
+      listing.line("  " + gp.keyword + " part " + std::to_string(p.id) + " '" + p.title + "': " + std::to_string(n) +
+                   " of " + std::to_string(gp.n_elements) + when);
     }
   }
   listing.line("");
