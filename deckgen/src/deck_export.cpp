@@ -330,7 +330,7 @@ void write_drop_decks(const std::filesystem::path& dir, const std::string& name,
   CardBuilder(e, "/ANIM/DT").set(0, "Tstart", 0.0).set(0, "Tfreq", 2.0).commit();
   CardBuilder(e, "/DT/NODA/CST").set(0, "Tsca", t.tsca).set(0, "Tmin", t.tmin).commit();
   CardBuilder(e, "/DT/SHELL/CST").set(0, "Tsca", t.tsca).set(0, "Tmin", t.tmin).commit();
-  CardBuilder(e, "/DT/BRICK/CST", 1).set(0, "Tsca", t.tsca).set(0, "Tmin", t.tmin).set(1, "VDEF_min", t.brick_vdef_min).commit();
+  CardBuilder(e, "/DT/BRICK/CST", 1).set(0, "Tsca", t.tsca).set(0, "Tmin", t.brick_tmin).set(1, "VDEF_min", t.brick_vdef_min).commit();
   CardBuilder(e, "/STOP").set(0, "Emax", 0.0).set(0, "DMmax", t.dm_max).commit();
   CardBuilder(e, "/PRINT", -100).commit();
   std::ostringstream oe;
