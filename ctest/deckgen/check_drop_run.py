@@ -15,28 +15,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation", "tools"))
-from validation_report import global_history, part_hourglass_end, run_health  # noqa: E402
+from validation_report import global_history, part_hourglass_end, run_health, small_strain_switches  # noqa: E402
 
 LIMITS = {"energy error": 2.0, "added mass": 1.0, "hourglass / internal": 10.0}  # per cent
-SWITCH_LINE = re.compile(r"^\s+(/\S+) part \d+ '([^']*)': (\d+) of \d+(?:, at ([0-9.eE+-]+)|, from ([0-9.eE+-]+) to [0-9.eE+-]+)?$")
-
-
-def first_switches(listing):
-    """(keyword, part, count, first switch time) of the listing's ELEMENTS SWITCHED TO SMALL STRAIN section."""
-    out, inside = [], False
-    for line in listing.splitlines():
-        if line.startswith("ELEMENTS SWITCHED TO SMALL STRAIN"):
-            inside = True
-            continue
-        if inside:
-            m = SWITCH_LINE.match(line)
-            if not m:
-                break
-            t = m.group(4) or m.group(5)
-            out.append((m.group(1), m.group(2), int(m.group(3)), float(t) if t else None))
-    return out
-
-
 def first_contact_time(starter):
     """Time at which the falling model reaches the floor: clearance / speed from the deck's header line."""
     m = re.search(r"dropped at ([0-9.]+) m/s onto a rigid floor ([0-9.]+) mm below", open(starter).read())
@@ -72,14 +53,14 @@ def main():
     # deformation has brought its step to Tmin; before the feet reach the floor the body moves
     # rigidly, so no element may switch then.
     t_contact = first_contact_time(deck)
-    switches = first_switches(text)
+    switches = small_strain_switches(text)
     if switches:
         print("switched to small strain: " + ", ".join(
-            f"{p} {n} (first at {t} ms)" for _, p, n, t in switches))
+            f"{p} {n} (first at {t} ms)" for _, p, n, _, t, _ in switches))
     if t_contact is None:
         print(f"{deck}: no 'dropped at ... m/s onto a rigid floor ... mm below' header line")
         return 1
-    early = [(p, t) for _, p, _, t in switches if t is None or t < t_contact]
+    early = [(p, t) for _, p, _, _, t, _ in switches if t is None or t < t_contact]
     if early:
         print(f"elements switched before the first floor contact ({t_contact:.3f} ms): "
               + ", ".join(f"{p} at {t} ms" for p, t in early))

@@ -108,12 +108,36 @@ def part_hourglass_end(run_dir, top=3):
     return [(n, v.get("HE", 0.0), v.get("IE", 0.0)) for n, v in ranked if v.get("HE", 0.0) > 0]
 
 
+SWITCH_LINE = re.compile(r"^\s+(/\S+) part \d+ '([^']*)': (\d+) of (\d+)"
+                         r"(?:, at ([0-9.eE+-]+)|, from ([0-9.eE+-]+) to ([0-9.eE+-]+))?$")
+
+
+def small_strain_switches(listing):
+    """(keyword, part, switched, elements, first time, last time) per line of the listing's
+    ELEMENTS SWITCHED TO SMALL STRAIN section (times None where the listing gives none)."""
+    out, inside = [], False
+    for line in listing.splitlines():
+        if line.startswith("ELEMENTS SWITCHED TO SMALL STRAIN"):
+            inside = True
+            continue
+        if inside:
+            m = SWITCH_LINE.match(line)
+            if not m:
+                break
+            first = m.group(5) or m.group(6)
+            last = m.group(5) or m.group(7)
+            out.append((m.group(1), m.group(2), int(m.group(3)), int(m.group(4)),
+                        float(first) if first else None, float(last) if last else None))
+    return out
+
+
 def listing_facts(run_dir, case):
     path = os.path.join(run_dir, f"{case}_0001.out")
     facts = {"terminated": "no listing", "cycles": None, "solver_wall_s": None, "reason": ""}
     if not os.path.exists(path):
         return facts
     text = open(path, errors="replace").read()
+    facts["switched"] = small_strain_switches(text)
     m = re.search(r"TIMING \(wall ([0-9.eE+-]+) s, (\d+) cycles\)", text)
     if m:
         facts["solver_wall_s"], facts["cycles"] = float(m.group(1)), int(m.group(2))
@@ -295,6 +319,16 @@ def main():
     for r in runs:
         hp = r.get("hg_parts") or []
         L.append(f"| {r['case']} | " + (", ".join(f"{n}: {fmt(h, 1)} / {fmt(i, 1)}" for n, h, i in hp) or "-") + " |")
+    L.append("")
+    L.append("Elements switched to small strain (/DT/BRICK/CST, /DT/SHELL/CST: their geometry is kept from the "
+             "switch on, docs/engine-design.md §12.8), per part, with the times of the first and the last switch:")
+    L.append("")
+    L.append("| case | part: switched of elements (first - last switch [ms]) |")
+    L.append("|---|---|")
+    for r in runs:
+        sw = r.get("switched") or []
+        L.append(f"| {r['case']} | " + (", ".join(
+            f"{p}: {n} of {tot} ({fmt(t0, 1)} - {fmt(t1, 1)})" for _, p, n, tot, t0, t1 in sw) or "none") + " |")
     L.append("")
     L.append("## Channels")
     L.append("")
