@@ -170,6 +170,13 @@ def fmt(v, p=2):
     return f"{v:.{p}f}"
 
 
+def per_case_parts_table(L, runs, intro, column, empty, cells):
+    """Appends a two-column table (case, comma-separated per-part cells(run) or `empty`) after its intro line."""
+    L += [intro, "", f"| case | {column} |", "|---|---|"]
+    L += [f"| {r['case']} | " + (", ".join(cells(r)) or empty) + " |" for r in runs]
+    L.append("")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--work", required=True)
@@ -311,25 +318,15 @@ def main():
              "added mass = (M - M0) / M0 from nodal mass scaling at the fixed 1.5 us step; hourglass / internal "
              "max is taken over the times when the internal energy exceeds 10 % of its peak.")
     L.append("")
-    L.append("Where the hourglass energy sits at the end of each run (the three parts with the most; "
-             "part internal energy beside it):")
-    L.append("")
-    L.append("| case | part: hourglass / internal energy [J] |")
-    L.append("|---|---|")
-    for r in runs:
-        hp = r.get("hg_parts") or []
-        L.append(f"| {r['case']} | " + (", ".join(f"{n}: {fmt(h, 1)} / {fmt(i, 1)}" for n, h, i in hp) or "-") + " |")
-    L.append("")
-    L.append("Elements switched to small strain (/DT/BRICK/CST, /DT/SHELL/CST: their geometry is kept from the "
-             "switch on, docs/engine-design.md §12.8), per part, with the times of the first and the last switch:")
-    L.append("")
-    L.append("| case | part: switched of elements (first - last switch [ms]) |")
-    L.append("|---|---|")
-    for r in runs:
-        sw = r.get("switched") or []
-        L.append(f"| {r['case']} | " + (", ".join(
-            f"{p}: {n} of {tot} ({fmt(t0, 1)} - {fmt(t1, 1)})" for _, p, n, tot, t0, t1 in sw) or "none") + " |")
-    L.append("")
+    per_case_parts_table(
+        L, runs, "Where the hourglass energy sits at the end of each run (the three parts with the most; "
+        "part internal energy beside it):", "part: hourglass / internal energy [J]", "-",
+        lambda r: [f"{n}: {fmt(h, 1)} / {fmt(i, 1)}" for n, h, i in r.get("hg_parts") or []])
+    per_case_parts_table(
+        L, runs, "Elements switched to small strain (/DT/BRICK/CST, /DT/SHELL/CST: their geometry is kept from the "
+        "switch on, docs/engine-design.md §12.8), per part, with the times of the first and the last switch:",
+        "part: switched of elements (first - last switch [ms])", "none",
+        lambda r: [f"{p}: {n} of {tot} ({fmt(t0, 1)} - {fmt(t1, 1)})" for _, p, n, tot, t0, t1 in r.get("switched") or []])
     L.append("## Channels")
     L.append("")
     L.append("| case | channel | model peak | corridor peak | model / corridor peak deflection | ISO R | grade | "
