@@ -18,6 +18,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from validation_report import global_history, part_hourglass_end, run_health, small_strain_switches  # noqa: E402
 
 LIMITS = {"energy error": 2.0, "added mass": 1.0, "hourglass / internal": 10.0}  # per cent
+
+
 def first_contact_time(starter):
     """Time at which the falling model reaches the floor: clearance / speed from the deck's header line."""
     m = re.search(r"dropped at ([0-9.]+) m/s onto a rigid floor ([0-9.]+) mm below", open(starter).read())
