@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -65,6 +66,37 @@ TEST(EngineVerification, UniaxialLaw1LogStrain) {
   // Imposed: u = 0.1 / (0.95 T) * integral of the ramp (0, 0) (0.1 T, 1) (T, 1) ...
   const double T = 5.0, t = r->result.time;
   EXPECT_NEAR(L - 1.0, 0.1 / (0.95 * T) * (t - 0.05 * T), 1e-9);  // exact imposed displacement
+  // The animation's specific energy (/ANIM/ELEM/ENER: internal energy / element mass) is the
+  // stress work per unit mass: sigma = E e with e = ln L and V = V0 exp((1 - 2 nu) e), so
+  // W / (rho V0) = E (exp(a e) (a e - 1) + 1) / (a^2 rho), a = 1 - 2 nu. 1 %.
+  const double rho = 1e-6, a = 1.0 - 2.0 * nu, e = std::log(L);
+  const double expect = E * (std::exp(a * e) * (a * e - 1.0) + 1.0) / (a * a * rho);
+  std::vector<double> ener(1), hourg(1);
+  solid(*r).cell_field(CellField::SpecificEnergy, ener);
+  solid(*r).cell_field(CellField::HourglassEnergy, hourg);
+  EXPECT_NEAR(ener[0], expect, 0.01 * expect);
+  EXPECT_NEAR(hourg[0], r->result.energies.hourglass, 1e-12 + 1e-9 * std::abs(r->result.energies.hourglass));
+}
+
+// The per-element energies of the animation add up to the run's balance: over the 256
+// bricks of law34_impact (physical hourglass), sum of specific energy x element mass = the
+// internal energy and sum of hourglass energy = the hourglass energy (1e-9 relative).
+TEST(EngineVerification, AnimationElementEnergiesSumToTheBalance) {
+  auto r = run_in_process("law34_impact");
+  ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
+  const SolidGroup& g = solid(*r);
+  std::vector<double> ener(g.n_elements), hourg(g.n_elements);
+  g.cell_field(CellField::SpecificEnergy, ener);
+  g.cell_field(CellField::HourglassEnergy, hourg);
+  double ie = 0.0, he = 0.0;
+  for (std::size_t e = 0; e < g.n_elements; ++e) {
+    ie += ener[e] * g.mass[e];
+    he += hourg[e];
+  }
+  ASSERT_GT(r->result.energies.internal, 0.0);
+  ASSERT_GT(r->result.energies.hourglass, 0.0);
+  EXPECT_NEAR(ie, r->result.energies.internal, 1e-9 * r->result.energies.internal);
+  EXPECT_NEAR(he, r->result.energies.hourglass, 1e-9 * r->result.energies.hourglass);
 }
 
 // LAW2 Johnson-Cook: sigma = a + b eps_p^n, eps_p = ln(L) - sigma/E, yield at a. 1%.
@@ -298,13 +330,34 @@ for ds in sets:
     assert g.GetCellType(0) == vtk.VTK_HEXAHEDRON
     for a in ('displacement', 'velocity', 'added_mass'):
         assert g.GetPointData().GetArray(a) is not None, a
-    for a in ('part', 'element_id', 'von_mises', 'plastic_strain', 'eroded'):
+    for a in ('part', 'element_id', 'von_mises', 'plastic_strain', 'eroded', 'specific_energy', 'hourglass_energy'):
         assert g.GetCellData().GetArray(a) is not None, a
 last = g.GetPointData().GetArray('displacement').GetRange(2)
 print('frames', len(sets), 'dz range', last)
 assert last[0] < -1.0
 )",
              (r->out / "law34_impact.pvd").string());
+}
+
+// An animation result the engine does not write is named, with the engine file and line,
+// not dropped silently; the run goes on (exit 0).
+TEST(EngineVerification, UnwrittenAnimationResultIsNamed) {
+  const fs::path src = example_deck("law34_impact").parent_path();
+  const fs::path dir = fs::current_path() / ("anim_acc" + per_process_suffix());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(src / "law34_impact_0000.rad", dir / "law34_impact_0000.rad");
+  std::string engine = read_text(src / "law34_impact_0001.rad");
+  const auto pos = engine.find("/ANIM/DT");
+  ASSERT_NE(pos, std::string::npos);
+  engine.insert(pos, "/ANIM/VECT/ACC\n");
+  const auto line = 1 + std::count(engine.begin(), engine.begin() + static_cast<std::ptrdiff_t>(pos), '\n');
+  std::ofstream(dir / "law34_impact_0001.rad") << engine;
+  std::string out;
+  EXPECT_EQ(run_solver(dir / "law34_impact_0000.rad", out), 0) << out;
+  EXPECT_NE(out.find("law34_impact_0001.rad:" + std::to_string(line) + ": warning: /ANIM/VECT/ACC: not written to the animation"),
+            std::string::npos)
+      << out;
 }
 
 // Constant-strain tetra and degenerate (prism) bricks under uniaxial stress:

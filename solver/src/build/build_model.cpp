@@ -19,6 +19,13 @@ void read_run_control(BuildContext& ctx, RunControl& rc) {
     rc.t_stop = run.back()->real(0, "Tstop");
   }
   for (const auto* c : e.cards_of("/TFILE")) rc.th_interval = c->real(0, "dt_his");
+  // Animation frames always hold displacement, velocity, contact force and added mass per
+  // node, and von Mises stress, plastic strain, erosion, specific energy and hourglass energy
+  // per element (output/vtk_writer.cpp); other requested results are not written: say so.
+  for (const char* kw : {"/ANIM/VECT/ACC", "/ANIM/VECT/FINT", "/ANIM/VECT/FEXT"})
+    for (const auto* c : e.cards_of(kw))
+      ctx.warning(*c, "not written to the animation (this engine writes displacement, velocity, contact force and "
+                      "added mass per node; von Mises stress, plastic strain, erosion, specific and hourglass energy per element)");
   for (const auto* c : e.cards_of("/ANIM/DT")) {
     rc.anim_start = c->real(0, "Tstart");
     rc.anim_interval = c->real(0, "Tfreq");

@@ -85,7 +85,7 @@ bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std
   }
   std::vector<std::int64_t> conn, offsets, part, elem;
   std::vector<std::uint8_t> types;
-  std::vector<double> vm, epsp, eroded, buf;
+  std::vector<double> vm, epsp, eroded, ener, hourg, buf;
   for (const auto& g : m.groups) {
     const std::int64_t pid = m.parts[static_cast<std::size_t>(g->part)].id;
     Index nodes[8];
@@ -99,7 +99,8 @@ bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std
       elem.push_back(g->element_id[e]);
     }
     for (auto [field, out] : {std::pair{CellField::VonMises, &vm}, std::pair{CellField::PlasticStrain, &epsp},
-                              std::pair{CellField::Eroded, &eroded}}) {
+                              std::pair{CellField::Eroded, &eroded}, std::pair{CellField::SpecificEnergy, &ener},
+                              std::pair{CellField::HourglassEnergy, &hourg}}) {
       buf.assign(g->n_elements, 0.0);
       g->cell_field(field, buf);
       out->insert(out->end(), buf.begin(), buf.end());
@@ -120,7 +121,8 @@ bool VtkWriter::write_frame(const Model& m, double time, const Vec3Soa& vel, std
   x << "<CellData Scalars=\"part\">\n"
     << a.array("Int64", "part", 1, part) << a.array("Int64", "element_id", 1, elem)
     << a.array("Float64", "von_mises", 1, vm) << a.array("Float64", "plastic_strain", 1, epsp)
-    << a.array("Float64", "eroded", 1, eroded) << "</CellData>\n";
+    << a.array("Float64", "eroded", 1, eroded) << a.array("Float64", "specific_energy", 1, ener)
+    << a.array("Float64", "hourglass_energy", 1, hourg) << "</CellData>\n";
   x << "<Points>\n" << a.array("Float64", "Points", 3, pts) << "</Points>\n";
   x << "<Cells>\n"
     << a.array("Int64", "connectivity", 1, conn) << a.array("Int64", "offsets", 1, offsets)

@@ -123,6 +123,12 @@ void ShellElementGroup::cell_field(CellField field, std::span<double> out) const
       case CellField::VonMises: out[e] = data.von_mises(e); break;
       case CellField::PlasticStrain: out[e] = data.max_epsp(e); break;
       case CellField::Eroded: out[e] = alive[e] ? 0.0 : 1.0; break;
+      case CellField::SpecificEnergy: {
+        const double m = slot_mass[e] * static_cast<double>(nodes_per_element);  // rho t A
+        out[e] = m > 0.0 ? data.eint[e] / m : 0.0;
+        break;
+      }
+      case CellField::HourglassEnergy: out[e] = data.ehg[e]; break;
     }
   }
 }

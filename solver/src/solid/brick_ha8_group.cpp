@@ -140,6 +140,8 @@ void BrickHa8Group::cell_field(CellField field, std::span<double> out) const {
         break;
       }
       case CellField::Eroded: out[e] = alive[e] ? 0.0 : 1.0; break;
+      case CellField::SpecificEnergy: out[e] = mass[e] > 0.0 ? e_int[e] / mass[e] : 0.0; break;
+      case CellField::HourglassEnergy: out[e] = 0.0; break;  // fully integrated: no hourglass modes
     }
   }
 }

@@ -176,6 +176,7 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     for (auto& a : hist) a.assign(n, 0.0);
   eps_p.assign(material.plastic() ? n : 0, 0.0);
   e_int.assign(n, 0.0);
+  e_hg.assign(n, 0.0);
   if (nodes_per_element == 8)
     for (auto& a : hg) a.assign(n, 0.0);
   if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
@@ -249,6 +250,8 @@ void SolidGroup::cell_field(CellField field, std::span<double> out) const {
       }
       case CellField::PlasticStrain: out[e] = eps_p.empty() ? 0.0 : eps_p[e]; break;
       case CellField::Eroded: out[e] = alive[e] ? 0.0 : 1.0; break;
+      case CellField::SpecificEnergy: out[e] = mass[e] > 0.0 ? e_int[e] / mass[e] : 0.0; break;
+      case CellField::HourglassEnergy: out[e] = e_hg[e]; break;
     }
   }
 }
@@ -788,6 +791,8 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   keep(q_bulk, b.q);
   for (std::size_t l = 0; l < n; ++l) b.e_int[l] = (b.e_int[l] + b.de[l]) + b.p_int[l];
   keep(e_int, b.e_int);
+  for (std::size_t l = 0; l < n; ++l)
+    if (b.ok[l] != 0.0) e_hg[e0 + l] += b.p_hg[l];
   // /DT/BRICK/CST: a lane whose step fell to Tmin (or volume ratio to VDEF_min) keeps its
   // present geometry from the next cycle on (small_strain_switch.hpp).
   if (frozen_geometry.active())

@@ -52,6 +52,7 @@ class SolidGroup final : public ElementGroup {
   std::array<std::vector<double>, 6> hist; // LAW34 hereditary deviator [stress]
   std::vector<double> eps_p;               // plastic strain (LAW2/36)
   std::vector<double> e_int;               // internal energy of the element [energy]
+  std::vector<double> e_hg;                // hourglass energy of the element [energy]
   std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]
   std::array<std::vector<double>, 12> hg_visc;  // Physical: viscous part of Q (global) [force]
   std::vector<double> q_bulk;              // bulk viscosity pressure of the last cycle [stress]

@@ -32,6 +32,8 @@ enum class CellField : std::uint8_t {
   VonMises,       // von Mises stress [stress]
   PlasticStrain,  // equivalent plastic strain [-]
   Eroded,         // 1 if deleted, else 0
+  SpecificEnergy,   // internal energy / element mass [energy/mass] (/ANIM/ELEM/ENER)
+  HourglassEnergy,  // hourglass energy of the element [energy] (/ANIM/ELEM/HOURG)
 };
 
 // Cumulative energies of a group since t = 0, through the current t^n [energy].
