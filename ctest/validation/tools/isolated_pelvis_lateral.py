@@ -52,7 +52,7 @@ from isolated_rib_bending import (ArgumentParser, Card, InputError, centroid, ch
                                   file_digest, fitted_slope, fmt, ids_in_rows_of_10, in_repo,
                                   interpolate, mean, node_line, ratio, read_model, read_time_history,
                                   run_hbm_solver, DriveSchedule, starter_head, write_deck_pair,
-                                  positive_number, tool_main,
+                                  positive_number, run_analytic_check, tool_main,
                                   FIXED_STEP_MS, RAMP_STROKE_MM)
 
 TOOL = "ctest/validation/tools/isolated_pelvis_lateral.py"
@@ -470,40 +470,14 @@ def print_pelvis_table(c, args):
 
 
 # ---------------------------------------------------------------- analytic plate check
-@dataclass
-class PlateCheck:
-    plate: Plate
-    run: RunResult
-    model_k: float
-
-    @property
-    def analytic_k(self):
-        return self.plate.analytic_stiffness()
-
-    @property
-    def deviation(self):
-        return self.model_k / self.analytic_k - 1.0
-
-    @property
-    def passed(self):
-        return abs(self.deviation) <= PLATE_TOLERANCE
-
-
 def check_plates(solver, work, speed):
-    checks = []
-    for plate in PLATES:
-        spec = plate.specimen()
-        run = run_solver(solver, write_deck(os.path.join(work, spec.name), spec, speed), spec)
-        model_k = fitted_slope(run.displacement, run.force, *STIFFNESS_FIT_MM)
-        if model_k is None:
-            raise InputError(f"{work}/{spec.name}: the run has no points between {STIFFNESS_FIT_MM[0]:g} and "
-                             f"{STIFFNESS_FIT_MM[1]:g} mm")
-        checks.append(PlateCheck(plate, run, model_k))
-    return checks
+    def run_specimen(spec):
+        return run_solver(solver, write_deck(os.path.join(work, spec.name), spec, speed), spec)
+    return [run_analytic_check(run_specimen, work, plate, PLATE_TOLERANCE, STIFFNESS_FIT_MM) for plate in PLATES]
 
 
 def describe_plate(check):
-    p = check.plate
+    p = check.shape
     return (f"Plate {p.load} ({'free' if p.load == 'bending' else 'guided'} end), L {p.length_mm:g} b {p.width_mm:g} "
             f"t {p.thickness_mm:g} mm, E {p.modulus_gpa:g} GPa, {p.cells_along} x {p.cells_across} quads: model k "
             f"{check.model_k:.3f} N/mm (fit {STIFFNESS_FIT_MM[0]:g}-{STIFFNESS_FIT_MM[1]:g} mm) vs {p.formula()} = "
@@ -614,7 +588,7 @@ def run(args):
         print(f"report: {args.report}")
     failed = [check for check in plate_checks if not check.passed]
     for check in failed:
-        print(f"FAIL: plate {check.plate.load} stiffness off by {100 * check.deviation:+.2f} % "
+        print(f"FAIL: plate {check.shape.load} stiffness off by {100 * check.deviation:+.2f} % "
               f"(limit +-{100 * PLATE_TOLERANCE:g} %)", file=sys.stderr)
     return 1 if failed else 0
 

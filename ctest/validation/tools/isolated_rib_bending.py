@@ -676,13 +676,16 @@ def print_summary(comparisons):
           f"{' '.join(parts)} k0 {k}")
 
 
-# ---------------------------------------------------------------- half ring check
+# ---------------------------------------------------------------- analytic checks
 @dataclass
-class RingCheck:
-    ring: Ring
+class AnalyticCheck:
+    """A specimen with a closed-form stiffness (`shape`: .specimen(), .analytic_stiffness())
+    run through the solver: the fitted model stiffness against the formula."""
+    shape: object
     run: RunResult
     model_k: float
     analytic_k: float
+    tolerance: float
 
     @property
     def deviation(self):
@@ -690,22 +693,28 @@ class RingCheck:
 
     @property
     def passed(self):
-        return abs(self.deviation) <= RING_TOLERANCE
+        return abs(self.deviation) <= self.tolerance
+
+
+def run_analytic_check(run_specimen, work, shape, tolerance, fit_mm):
+    """run_specimen(spec) writes the specimen's decks under `work`, runs them and returns the
+    tool's RunResult (displacement, force); the stiffness is fitted over fit_mm (lo, hi)."""
+    spec = shape.specimen()
+    run = run_specimen(spec)
+    model_k = fitted_slope(run.displacement, run.force, *fit_mm)
+    if model_k is None:
+        raise InputError(f"{work}/{spec.name}: the run has no points between {fit_mm[0]:g} and {fit_mm[1]:g} mm")
+    return AnalyticCheck(shape, run, model_k, shape.analytic_stiffness(), tolerance)
 
 
 def check_ring(solver, work, speed):
-    ring = Ring()
-    spec = ring.specimen()
-    run = run_solver(solver, write_deck(os.path.join(work, spec.name), spec, speed), spec)
-    model_k = fitted_slope(run.displacement, run.force, *STIFFNESS_FIT_MM)
-    if model_k is None:
-        raise InputError(f"{work}/ring: the run has no points between {STIFFNESS_FIT_MM[0]:g} and "
-                         f"{STIFFNESS_FIT_MM[1]:g} mm")
-    return RingCheck(ring, run, model_k, ring.analytic_stiffness())
+    return run_analytic_check(
+        lambda spec: run_solver(solver, write_deck(os.path.join(work, spec.name), spec, speed), spec), work, Ring(),
+        RING_TOLERANCE, STIFFNESS_FIT_MM)
 
 
 def describe_ring(check):
-    g = check.ring
+    g = check.shape
     return (f"Half ring R {g.radius_mm:g} mm, h {g.height_mm:g} mm, t {g.thickness_mm:g} mm, E {g.modulus_gpa:g} GPa, "
             f"{g.cells_along} x 1 cells: model k {check.model_k:.3f} N/mm (fit {STIFFNESS_FIT_MM[0]:g}-"
             f"{STIFFNESS_FIT_MM[1]:g} mm) vs 2 E I / (pi R^3) = {check.analytic_k:.3f} N/mm "
