@@ -96,35 +96,21 @@ class Specimen:
     stroke_mm: float
 
 
-def read_rigid_bodies(path):
+def read_rigid_bodies(model):
     """The model's /RBODY cards by title, each with its /GRNOD/NODE group of secondaries."""
-    try:
-        with open(path) as f:
-            text = f.read().splitlines()
-    except OSError as e:
-        raise InputError(f"{path}: cannot read the model deck ({e.strerror})") from None
-    cards, card = {}, None
-    for line_no, line in enumerate(text, 1):
-        if line.startswith("#"):
-            continue
-        if line.startswith("/"):
-            key = line.strip()
-            card = Card(key, [], line_no) if key.startswith(("/RBODY/", "/GRNOD/NODE/")) else None
-            if card:
-                cards[key] = card
-        elif card is not None:
-            card.lines.append(line)
+    path = model.path
     bodies = {}
-    for key, card in cards.items():
-        if not key.startswith("/RBODY/"):
+    for (kind, _), card in model.cards.items():
+        if kind != "RBODY":
             continue
+        key = card.key
         try:
             title, first = card.lines[0].strip(), card.lines[1]
             main, group_id = int(first[0:10]), int(first[60:70])
         except (IndexError, ValueError):
             raise InputError(f"{path}:{card.line_no}: {key}: expected a title line, then main node id "
                              f"(columns 1-10) and grnod_id (columns 61-70)") from None
-        group = cards.get(f"/GRNOD/NODE/{group_id}")
+        group = model.cards.get(("GRNOD", group_id))
         if group is None:
             raise InputError(f"{path}:{card.line_no}: {key} refers to /GRNOD/NODE/{group_id}, "
                              "which is not in the file")
@@ -572,7 +558,7 @@ def run(args):
     if args.model:  # read every input before the first run
         guillemot = read_guillemot(args.guillemot)
         model = read_model(args.model)
-        pelvis = cut_pelvis(model, read_rigid_bodies(args.model), args.guided, args.stroke)
+        pelvis = cut_pelvis(model, read_rigid_bodies(model), args.guided, args.stroke)
     plate_checks = []
     if args.check_plate:
         plate_checks = check_plates(args.solver, args.work, args.speed)

@@ -145,7 +145,7 @@ class Card:
 class Model:
     path: str
     nodes: dict     # id -> (x, y, z)
-    cards: dict     # (kind, id) -> Card for /MAT, /PROP and /PART
+    cards: dict     # (kind, id) -> Card for /MAT, /PROP, /PART, /RBODY and /GRNOD/NODE (kind "GRNOD")
     elements: dict  # (kind, part id) -> list of (line number, text) for /SH3N, /SHELL, /BRICK
 
     def part_id(self, title):
@@ -181,7 +181,8 @@ class Model:
 
 
 def read_model(path):
-    """The model include: nodes, /MAT /PROP /PART cards and the element lines per part."""
+    """The model include: nodes, /MAT /PROP /PART /RBODY /GRNOD/NODE cards and the element
+    lines per part."""
     try:
         with open(path) as f:
             text = f.read().splitlines()
@@ -196,12 +197,14 @@ def read_model(path):
             key = line.strip()
             fields = key.split("/")
             block, card, elements = fields[1], None, None
-            if block in ("MAT", "PROP", "PART", "SH3N", "SHELL", "BRICK"):
+            if block == "GRNOD" and fields[2:3] != ["NODE"]:
+                block = None  # other group kinds: not needed here
+            if block in ("MAT", "PROP", "PART", "RBODY", "GRNOD", "SH3N", "SHELL", "BRICK"):
                 try:
                     cid = int(fields[-1])
                 except ValueError:
                     raise InputError(f"{path}:{line_no}: '{key}' does not end in an id") from None
-                if block in ("MAT", "PROP", "PART"):
+                if block in ("MAT", "PROP", "PART", "RBODY", "GRNOD"):
                     card = model.cards[(block, cid)] = Card(key, [], line_no)
                 else:
                     elements = model.elements.setdefault((block, cid), [])
