@@ -127,17 +127,11 @@ def cut_pelvis(model, bodies, guided, stroke_mm):
     cards, nodes_of_part, mat_keys, contents = [], {}, set(), []
     for title in PELVIS_PARTS:
         pid = model.part_id(title)
-        part = model.cards[("PART", pid)]
-        try:
-            prop_id, mat_id = int(part.lines[1][0:10]), int(part.lines[1][10:20])
-        except (IndexError, ValueError):
-            raise InputError(f"{model.path}:{part.line_no}: {part.key}: second line is not property id + "
-                             f"material id in 10 columns") from None
-        mat = model.card("MAT", mat_id, part)
+        part, prop, mat = model.part_cards(pid)
         if mat.key not in mat_keys:  # a material shared by two parts is written once
             mat_keys.add(mat.key)
             cards.append(mat)
-        cards += [model.card("PROP", prop_id, part), part]
+        cards += [prop, part]
         nodes_of_part[title] = set()
         for kind, count in (("SHELL", 4), ("SH3N", 3), ("BRICK", 8)):
             rows = model.elements.get((kind, pid), [])

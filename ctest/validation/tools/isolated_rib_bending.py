@@ -163,6 +163,16 @@ class Model:
                              f"which is not in the file")
         return self.cards[(kind, cid)]
 
+    def part_cards(self, pid):
+        """The /PART card of part pid and the /PROP and /MAT cards it refers to."""
+        part = self.cards[("PART", pid)]
+        try:
+            prop_id, mat_id = int(part.lines[1][0:10]), int(part.lines[1][10:20])
+        except (IndexError, ValueError):
+            raise InputError(f"{self.path}:{part.line_no}: {part.key}: second line is not property id + "
+                             f"material id in 10 columns") from None
+        return part, self.card("PROP", prop_id, part), self.card("MAT", mat_id, part)
+
     def element_nodes(self, kind, pid, first, count):
         """Node ids of each element of /kind/pid (count 10-column fields from column first)."""
         rows = []
@@ -243,13 +253,7 @@ class Specimen:
 def cut_rib(model, level, stroke_mm):
     """Rib `level` of the model's right side in the test frame (module docstring)."""
     pid = model.part_id(f"rib_{level:02d}")
-    part = model.cards[("PART", pid)]
-    try:
-        prop_id, mat_id = int(part.lines[1][0:10]), int(part.lines[1][10:20])
-    except (IndexError, ValueError):
-        raise InputError(f"{model.path}:{part.line_no}: {part.key}: second line is not property id + "
-                         f"material id in 10 columns") from None
-    prop_card, mat_card = model.card("PROP", prop_id, part), model.card("MAT", mat_id, part)
+    part, prop_card, mat_card = model.part_cards(pid)
 
     triangles = []
     y_sign = -1.0  # the model's right side is y < 0
