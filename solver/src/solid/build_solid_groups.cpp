@@ -89,7 +89,7 @@ bool read_solid_material(BuildContext& ctx, const hbm::deck::Card& m, SolidMater
   return true;
 }
 
-bool read_solid_property(BuildContext& ctx, const Part& part, SolidGroup& g) {
+bool read_solid_property(BuildContext& ctx, const Part& part, int nodes_per_element, SolidGroup& g) {
   g.hourglass = g.material.viscoelastic() ? HourglassForm::Physical : HourglassForm::Viscous;
   const hbm::deck::Card* p = part.prop_card;
   if (!p) return true;
@@ -111,6 +111,15 @@ bool read_solid_property(BuildContext& ctx, const Part& part, SolidGroup& g) {
                     " not supported (0, 1 viscous, 2 stiffness, 14 HA8 full integration, 24 physical)");
       return false;
   }
+  // Itetra4 (4-node tetras; OpenRadioss: 0 = 1000 standard one-point tetra, 3 the smoothed
+  // tetra of solide4_sfem): 3 = average nodal pressure here (nodal_pressure_average.hpp).
+  const auto itetra4 = nodes_per_element == 4 ? p->integer(0, "Itetra4") : 0;  // bricks: ignored
+  if (itetra4 != 0 && itetra4 != 3) {
+    ctx.error(*p, p->lines.at(0), "Itetra4",
+              "Itetra4 = " + std::to_string(itetra4) + " not supported (0 constant strain, 3 average nodal pressure)");
+    return false;
+  }
+  g.nodal_pressure.enabled = itetra4 == 3;
   g.icpre = static_cast<int>(p->integer(0, "Icpre"));
   g.qa = p->real(1, "qa");
   g.qb = p->real(1, "qb");
@@ -239,7 +248,7 @@ void build_solid_groups(BuildContext& ctx) {
       }
       auto g = std::make_unique<SolidGroup>();
       if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
-      if (!read_solid_property(ctx, p, *g)) continue;
+      if (!read_solid_property(ctx, p, npe, *g)) continue;
       if (npe == 8) g->small_strain = small_strain;
       fill_group(ctx, kw, part, cards, std::move(g));
     }

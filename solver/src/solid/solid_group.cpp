@@ -182,6 +182,7 @@ Index SolidGroup::initialize(const NodalState& nodes) {
   if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
     for (auto& a : hg_visc) a.assign(n, 0.0);
   if (nodes_per_element == 8 && small_strain.enabled) frozen_geometry.allocate(n);
+  if (nodes_per_element != 4) nodal_pressure.enabled = false;
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
   allocate_slots(false);
@@ -203,6 +204,7 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     volume0[e] = v;
     mass[e] = material.rho * v;
   }
+  if (nodal_pressure.enabled) nodal_pressure.setup(connectivity, volume0);
   return bad;
 }
 
@@ -226,7 +228,7 @@ SolidGroup::HourglassCoefficients SolidGroup::physical_coefficients() const {
 }
 
 std::string_view SolidGroup::formulation() const {
-  if (nodes_per_element == 4) return "tetra4 constant strain";
+  if (nodes_per_element == 4) return nodal_pressure.enabled ? "tetra4 average nodal pressure" : "tetra4 constant strain";
   switch (hourglass) {
     case HourglassForm::Viscous: return "brick8 1-point FB viscous hourglass";
     case HourglassForm::Stiffness: return "brick8 1-point FB stiffness hourglass";
@@ -340,7 +342,19 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
     for (int k = 0; k < 6; ++k) s_old[k] = s_el[k] + h[k];
     if (dt > 0.0) {
       const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr};
-      update_solid_stress(mat, st, d, wxy, wyz, wzx, dt, s_new);
+      if (nodal_pressure.enabled) {
+        // Deviator from the element, mean stress K ln J from the nodes (nodal_pressure_average.hpp).
+        const double third = (d[0] + d[1] + d[2]) / 3.0;
+        const double d_dev[6] = {d[0] - third, d[1] - third, d[2] - third, d[3], d[4], d[5]};
+        update_solid_stress(mat, st, d_dev, wxy, wyz, wzx, dt, s_new);
+        const double shift = mat.K * nodal_pressure.mean_log_j(e) - (s_el[0] + s_el[1] + s_el[2]) / 3.0;
+        for (int k = 0; k < 3; ++k) {
+          s_el[k] += shift;
+          s_new[k] += shift;
+        }
+      } else {
+        update_solid_stress(mat, st, d, wxy, wyz, wzx, dt, s_new);
+      }
       for (int k = 0; k < 6; ++k) sig[k][e] = s_el[k];
       if (visco)
         for (int k = 0; k < 6; ++k) hist[k][e] = h[k];
@@ -839,6 +853,7 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   ChunkSums stack_sums[kStackChunks];
   std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
   ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
+  if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive);
   if (nch == 1) {
     ChunkSums& c = sums[0];
     if (nodes_per_element == 8)

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "hbm/solver/element_group.hpp"
+#include "solid/nodal_pressure_average.hpp"
 #include "solid/small_strain_switch.hpp"
 #include "solid/solid_material.hpp"
 
@@ -58,6 +59,9 @@ class SolidGroup final : public ElementGroup {
   std::vector<double> q_bulk;              // bulk viscosity pressure of the last cycle [stress]
   // /DT/BRICK/CST (8-node bricks; set before initialize, which sizes the frozen geometry).
   SmallStrainSwitch small_strain;
+  // /TETRA4 with Itetra4 3: pressure from the averaged nodal volumes (set nodal_pressure.enabled
+  // before initialize).
+  NodalPressureAverage nodal_pressure;
   FrozenBrickGeometry frozen_geometry;
   std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
