@@ -96,16 +96,3 @@ TEST(SmallStrainSwitchDeck, AspectRatioSwitchIsNotSupported) {
   EXPECT_NE(out.find("not supported"), std::string::npos) << out;
 }
 
-TEST(SmallStrainSwitchDeck, TetrahedraAreNamedAsNotSwitching) {
-  const fs::path src = hbm::solver::testing::example_deck("tetra_prism_uniaxial").parent_path();
-  const fs::path dir = fs::current_path() / ("cst_tetra" + hbm::solver::testing::per_process_suffix());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  fs::copy_file(src / "tetra_prism_uniaxial_0000.rad", dir / "tetra_prism_uniaxial_0000.rad");
-  std::ofstream(dir / "tetra_prism_uniaxial_0001.rad")
-      << hbm::solver::testing::read_text(src / "tetra_prism_uniaxial_0001.rad") << "/DT/BRICK/CST/0\n0.9 1e-9\n";
-  std::string out;
-  EXPECT_EQ(run_solver(dir / "tetra_prism_uniaxial_0000.rad", out), 0) << out;
-  EXPECT_NE(out.find("tetra_prism_uniaxial_0001.rad:"), std::string::npos) << out;
-  EXPECT_NE(out.find("/TETRA4 elements do not switch"), std::string::npos) << out;
-}

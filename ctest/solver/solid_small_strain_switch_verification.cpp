@@ -8,7 +8,10 @@
 //  - the brick is crushed through zero height without inverting (the control run without
 //    the switch stops with an inverted element), and the internal energy equals the work
 //    of the nodal forces on the moving top face (trapezoidal rule) throughout.
-// Both the one-point brick (Isolid 1/24) and the HA8 brick (Isolid 14) are checked.
+// Both the one-point brick (Isolid 1/24) and the HA8 brick (Isolid 14) are checked, and a
+// 4-node tetra (three nodes on the bottom face, the apex moving down: uniaxial strain as
+// well) with the element pressure and with the average nodal pressure (Itetra4 3, whose
+// switched tetra counts the volume integrated from its strain rate).
 #include "solid/brick_block.hpp"
 #include "solid/brick_ha8_group.hpp"
 
@@ -170,6 +173,25 @@ TEST(SolidSmallStrainSwitch, Ha8BrickCrushedThroughWithoutInverting) {
     ASSERT_EQ(g.initialize(m.nodes), kNoIndex);
     crush_and_check(m, g, enable);
   }
+}
+
+TEST(SolidSmallStrainSwitch, TetraCrushedThroughWithoutInverting) {
+  for (bool nodal_pressure : {false, true})
+    for (bool enable : {false, true}) {
+      Model m;
+      const SolidGroup& cube = make_cube(m);  // nodes 0 (0,0,0), 1 (h,0,0), 2 (0,h,0), 4 (0,0,h)
+      SolidGroup g;
+      g.material = cube.material;
+      g.connectivity = {0, 1, 2, 4};
+      g.n_elements = 1;
+      g.nodes_per_element = 4;
+      g.qa = g.qb = 0.0;
+      g.nodal_pressure.enabled = nodal_pressure;
+      g.small_strain.enabled = enable;
+      g.small_strain.vdef_min = kVdef;
+      ASSERT_EQ(g.initialize(m.nodes), kNoIndex);
+      crush_and_check(m, g, enable);
+    }
 }
 
 }  // namespace

@@ -199,9 +199,6 @@ bool read_ha8_property(BuildContext& ctx, const Part& part, BrickHa8Group& g) {
 SmallStrainSwitch read_small_strain_switch(BuildContext& ctx) {
   SmallStrainSwitch sw;
   const auto cards = ctx.engine().cards_of("/DT/BRICK/CST");
-  // Tetrahedra keep the large strain formulation: say so rather than switch silently less.
-  if (!cards.empty() && !ctx.starter().cards_of("/TETRA4").empty())
-    ctx.warning(*cards.back(), "/TETRA4 elements do not switch to small strain (8-node bricks only)");
   for (const hbm::deck::Card* c : cards) {
     sw.enabled = true;
     sw.tsca = c->real(0, "Tsca");
@@ -249,7 +246,7 @@ void build_solid_groups(BuildContext& ctx) {
       auto g = std::make_unique<SolidGroup>();
       if (!p.mat_card || !read_solid_material(ctx, *p.mat_card, g->material)) continue;
       if (!read_solid_property(ctx, p, npe, *g)) continue;
-      if (npe == 8) g->small_strain = small_strain;
+      g->small_strain = small_strain;
       fill_group(ctx, kw, part, cards, std::move(g));
     }
   }

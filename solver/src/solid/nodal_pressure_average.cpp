@@ -40,11 +40,12 @@ void NodalPressureAverage::setup(const std::vector<Index>& connectivity, const s
 }
 
 void NodalPressureAverage::update(const NodalState& nodes, const std::vector<Index>& connectivity,
-                                  const std::vector<std::uint8_t>& alive) {
+                                  const std::vector<std::uint8_t>& alive, const std::vector<double>& small_volume) {
   std::fill(v_.begin(), v_.end(), 0.0);
   const std::size_t n = volume0_.size();
   for (std::size_t e = 0; e < n; ++e) {
-    const double ve = alive[e] ? tetra_volume(nodes, &connectivity[e * 4]) : volume0_[e];
+    const bool switched = !small_volume.empty() && small_volume[e] > 0.0;
+    const double ve = !alive[e] ? volume0_[e] : switched ? small_volume[e] : tetra_volume(nodes, &connectivity[e * 4]);
     for (int i = 0; i < 4; ++i) v_[static_cast<std::size_t>(local_[e * 4 + i])] += 0.25 * ve;
   }
   for (std::size_t k = 0; k < v_.size(); ++k) {

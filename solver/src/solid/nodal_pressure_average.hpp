@@ -37,8 +37,11 @@ class NodalPressureAverage {
   // Current nodal volumes from the tetras of the group (alive or not: a deleted tetra keeps
   // its share frozen at V0, so it neither pulls nor pushes its nodes), then each tetra's
   // mean ln J_n into mean_log_j. A node whose volume is not positive (only around inverted
-  // tetras, which stop the run) counts ln J = 0.
-  void update(const NodalState& nodes, const std::vector<Index>& connectivity, const std::vector<std::uint8_t>& alive);
+  // tetras, which stop the run) counts ln J = 0. A tetra switched to small strain
+  // (small_volume[e] > 0; empty: none) counts with that volume, integrated from its strain
+  // rate, instead of its nodes' positions.
+  void update(const NodalState& nodes, const std::vector<Index>& connectivity, const std::vector<std::uint8_t>& alive,
+              const std::vector<double>& small_volume);
 
   double mean_log_j(std::size_t e) const { return mean_log_j_[e]; }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// /DT/BRICK/CST: a brick whose time step falls to Tmin switches to the small strain
+// /DT/BRICK/CST: a brick (or 4-node tetra) whose time step falls to Tmin switches to the small strain
 // formulation (OpenRadioss engine keyword /DT/BRICK/CST/Iflag: "elements are switched to
 // small strain formulation to maintain the constant time step Tmin"; with Iflag 1 also
 // the bricks whose volume ratio V/V0 falls to VDEF_min).
@@ -31,15 +31,16 @@ struct SmallStrainSwitch {
   }
 };
 
-// Frozen geometry of the switched elements of one brick group: flag per element and the
-// 8 x 3 coordinates at the switch, [e * 24 + 3 * i + k] (node i, component k).
+// Frozen geometry of the switched elements of one solid group: flag per element and the
+// n x 3 coordinates at the switch (n = 8 bricks, 4 tetras), [e * 3n + 3 * i + k] (node i,
+// component k).
 struct FrozenBrickGeometry {
   std::vector<std::uint8_t> frozen;
   std::vector<double> x;
 
-  void allocate(std::size_t n_elements) {
+  void allocate(std::size_t n_elements, std::size_t nodes_per_element = 8) {
     frozen.assign(n_elements, 0);
-    x.assign(24 * n_elements, 0.0);
+    x.assign(3 * nodes_per_element * n_elements, 0.0);
   }
   bool active() const { return !frozen.empty(); }
   std::size_t count() const {

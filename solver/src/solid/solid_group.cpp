@@ -181,7 +181,8 @@ Index SolidGroup::initialize(const NodalState& nodes) {
     for (auto& a : hg) a.assign(n, 0.0);
   if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
     for (auto& a : hg_visc) a.assign(n, 0.0);
-  if (nodes_per_element == 8 && small_strain.enabled) frozen_geometry.allocate(n);
+  if (small_strain.enabled) frozen_geometry.allocate(n, nodes_per_element);
+  small_strain_volume.assign(nodes_per_element == 4 && small_strain.enabled ? n : 0, 0.0);
   if (nodes_per_element != 4) nodal_pressure.enabled = false;
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
@@ -282,6 +283,13 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
       x[i] = nodes.x.x[k]; y[i] = nodes.x.y[k]; z[i] = nodes.x.z[k];
       vx[i] = nodes.v.x[k]; vy[i] = nodes.v.y[k]; vz[i] = nodes.v.z[k];
     }
+    const bool frozen = frozen_geometry.active() && frozen_geometry.frozen[e];
+    if (frozen) {  // small strain: the shape at the switch (small_strain_switch.hpp)
+      const double* xf = &frozen_geometry.x[e * 12];
+      for (int i = 0; i < NPE; ++i) {
+        x[i] = xf[3 * i]; y[i] = xf[3 * i + 1]; z[i] = xf[3 * i + 2];
+      }
+    }
     double bx[4], by[4], bz[4], V = 0.0, amax = 0.0;
     tetra_volume_gradient(x, y, z, bx, by, bz, V, amax);
     const double l = 3.0 * V / amax;
@@ -304,7 +312,7 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
       const double* gx = bx;
       const double* gy = by;
       const double* gz = bz;
-      if (dt > 0.0) {
+      if (dt > 0.0 && !frozen) {
         for (int i = 0; i < NPE; ++i) {
           xm[i] = x[i] - 0.5 * dt * vx[i];
           ym[i] = y[i] - 0.5 * dt * vy[i];
@@ -377,13 +385,19 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
     auto power = [&](const double* s) {
       return s[0] * d[0] + s[1] * d[1] + s[2] * d[2] + 2.0 * (s[3] * d[3] + s[4] * d[4] + s[5] * d[5]);
     };
-    const double de = (0.5 * (power(s_old) + power(s_new)) - 0.5 * (q_bulk[e] + q) * dv) * v_mid * dt;
+    // A switched tetra with the nodal pressure: gradients B of the frozen shape, volume V_s
+    // integrated from tr D (the one its nodes' volumes count), so the work of its forces
+    // V_s sigma : D is the energy the nodal pressure stores (b = V_s B).
+    // The trapezoidal work takes the old stress on the old volume V_s exp(-tr D dt).
+    const double vs = frozen && nodal_pressure.enabled ? small_strain_volume[e] / V : 1.0;
+    const double vs_old = frozen && nodal_pressure.enabled ? vs * std::exp(-dv * dt) : 1.0;
+    const double de = (0.5 * (vs_old * (power(s_old) - q_bulk[e] * dv) + vs * (power(s_new) - q * dv))) * v_mid * dt;
     q_bulk[e] = q;
     e_int[e] += de;
     e_int_inc += de;
     // Internal forces: f_iI = -(sigma_ij - q delta_ij) b_jI  (b = V B).
-    const double sxx = s_new[0] - q, syy = s_new[1] - q, szz = s_new[2] - q;
-    const double sxy = s_new[3], syz = s_new[4], szx = s_new[5];
+    const double sxx = vs * (s_new[0] - q), syy = vs * (s_new[1] - q), szz = vs * (s_new[2] - q);
+    const double sxy = vs * s_new[3], syz = vs * s_new[4], szx = vs * s_new[5];
     double fx[4], fy[4], fz[4];
     for (int i = 0; i < NPE; ++i) {
       fx[i] = -(sxx * bx[i] + sxy * by[i] + szx * bz[i]);
@@ -409,6 +423,14 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
     if (dte < dt_min) {
       dt_min = dte;
       dt_elem = static_cast<Index>(e);
+    }
+    if (!frozen && small_strain.enabled && small_strain.triggers(dte, V / volume0[e])) {
+      double* xf = &frozen_geometry.x[e * 12];
+      for (int i = 0; i < NPE; ++i) {
+        xf[3 * i] = x[i]; xf[3 * i + 1] = y[i]; xf[3 * i + 2] = z[i];
+      }
+      frozen_geometry.frozen[e] = 1;
+      small_strain_volume[e] = V;
     }
     const double k_slot = 2.0 * (mass[e] / NPE) / (dte * dte);
     for (int i = 0; i < NPE; ++i) {
@@ -853,7 +875,27 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   ChunkSums stack_sums[kStackChunks];
   std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
   ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
-  if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive);
+  if (nodal_pressure.enabled) {
+    // Switched tetras: the volume the nodal pressure sees is integrated from the strain rate
+    // of this step, tr D = sum_I b_I . v_I / V on the frozen shape (which has no volume change
+    // of its own).
+    if (!small_strain_volume.empty() && step.dt_prev > 0.0)
+      for (std::size_t e = 0; e < n_elements; ++e) {
+        if (!frozen_geometry.frozen[e] || !alive[e]) continue;
+        const double* xf = &frozen_geometry.x[e * 12];
+        double x[4], y[4], z[4], bx[4], by[4], bz[4], V = 0.0, amax = 0.0, rate = 0.0;
+        for (int i = 0; i < 4; ++i) {
+          x[i] = xf[3 * i]; y[i] = xf[3 * i + 1]; z[i] = xf[3 * i + 2];
+        }
+        tetra_volume_gradient(x, y, z, bx, by, bz, V, amax);
+        for (int i = 0; i < 4; ++i) {
+          const auto k = static_cast<std::size_t>(connectivity[e * 4 + i]);
+          rate += bx[i] * nodes.v.x[k] + by[i] * nodes.v.y[k] + bz[i] * nodes.v.z[k];
+        }
+        small_strain_volume[e] *= std::exp(rate / V * step.dt_prev);
+      }
+    nodal_pressure.update(nodes, connectivity, alive, small_strain_volume);
+  }
   if (nch == 1) {
     ChunkSums& c = sums[0];
     if (nodes_per_element == 8)
