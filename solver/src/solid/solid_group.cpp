@@ -350,8 +350,10 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
     for (int k = 0; k < 6; ++k) s_old[k] = s_el[k] + h[k];
     if (dt > 0.0) {
       const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr};
-      if (nodal_pressure.enabled) {
+      if (nodal_pressure.enabled && !frozen) {
         // Deviator from the element, mean stress K ln J from the nodes (nodal_pressure_average.hpp).
+        // A switched tetra goes on from its stress at the switch with its own strain rate
+        // (small strain: tr D of the frozen shape), its nodal volume share kept at the switch.
         const double third = (d[0] + d[1] + d[2]) / 3.0;
         const double d_dev[6] = {d[0] - third, d[1] - third, d[2] - third, d[3], d[4], d[5]};
         update_solid_stress(mat, st, d_dev, wxy, wyz, wzx, dt, s_new);
@@ -385,19 +387,13 @@ void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step,
     auto power = [&](const double* s) {
       return s[0] * d[0] + s[1] * d[1] + s[2] * d[2] + 2.0 * (s[3] * d[3] + s[4] * d[4] + s[5] * d[5]);
     };
-    // A switched tetra with the nodal pressure: gradients B of the frozen shape, volume V_s
-    // integrated from tr D (the one its nodes' volumes count), so the work of its forces
-    // V_s sigma : D is the energy the nodal pressure stores (b = V_s B).
-    // The trapezoidal work takes the old stress on the old volume V_s exp(-tr D dt).
-    const double vs = frozen && nodal_pressure.enabled ? small_strain_volume[e] / V : 1.0;
-    const double vs_old = frozen && nodal_pressure.enabled ? vs * std::exp(-dv * dt) : 1.0;
-    const double de = (0.5 * (vs_old * (power(s_old) - q_bulk[e] * dv) + vs * (power(s_new) - q * dv))) * v_mid * dt;
+    const double de = (0.5 * (power(s_old) + power(s_new)) - 0.5 * (q_bulk[e] + q) * dv) * v_mid * dt;
     q_bulk[e] = q;
     e_int[e] += de;
     e_int_inc += de;
     // Internal forces: f_iI = -(sigma_ij - q delta_ij) b_jI  (b = V B).
-    const double sxx = vs * (s_new[0] - q), syy = vs * (s_new[1] - q), szz = vs * (s_new[2] - q);
-    const double sxy = vs * s_new[3], syz = vs * s_new[4], szx = vs * s_new[5];
+    const double sxx = s_new[0] - q, syy = s_new[1] - q, szz = s_new[2] - q;
+    const double sxy = s_new[3], syz = s_new[4], szx = s_new[5];
     double fx[4], fy[4], fz[4];
     for (int i = 0; i < NPE; ++i) {
       fx[i] = -(sxx * bx[i] + sxy * by[i] + szx * bz[i]);
@@ -875,27 +871,7 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   ChunkSums stack_sums[kStackChunks];
   std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
   ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
-  if (nodal_pressure.enabled) {
-    // Switched tetras: the volume the nodal pressure sees is integrated from the strain rate
-    // of this step, tr D = sum_I b_I . v_I / V on the frozen shape (which has no volume change
-    // of its own).
-    if (!small_strain_volume.empty() && step.dt_prev > 0.0)
-      for (std::size_t e = 0; e < n_elements; ++e) {
-        if (!frozen_geometry.frozen[e] || !alive[e]) continue;
-        const double* xf = &frozen_geometry.x[e * 12];
-        double x[4], y[4], z[4], bx[4], by[4], bz[4], V = 0.0, amax = 0.0, rate = 0.0;
-        for (int i = 0; i < 4; ++i) {
-          x[i] = xf[3 * i]; y[i] = xf[3 * i + 1]; z[i] = xf[3 * i + 2];
-        }
-        tetra_volume_gradient(x, y, z, bx, by, bz, V, amax);
-        for (int i = 0; i < 4; ++i) {
-          const auto k = static_cast<std::size_t>(connectivity[e * 4 + i]);
-          rate += bx[i] * nodes.v.x[k] + by[i] * nodes.v.y[k] + bz[i] * nodes.v.z[k];
-        }
-        small_strain_volume[e] *= std::exp(rate / V * step.dt_prev);
-      }
-    nodal_pressure.update(nodes, connectivity, alive, small_strain_volume);
-  }
+  if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive, small_strain_volume);
   if (nch == 1) {
     ChunkSums& c = sums[0];
     if (nodes_per_element == 8)

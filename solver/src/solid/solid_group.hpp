@@ -63,7 +63,7 @@ class SolidGroup final : public ElementGroup {
   // before initialize).
   NodalPressureAverage nodal_pressure;
   FrozenBrickGeometry frozen_geometry;
-  std::vector<double> small_strain_volume;  // switched tetras: volume from the strain rate
+  std::vector<double> small_strain_volume;  // switched tetras: volume at the switch (nodal pressure share)
   std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
