@@ -179,7 +179,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         int_field("Icpre", 30, 0, 3, 0, "constant pressure flag"),
         int_field("Itetra10", 40, 0, 3, 0, "10-node tetra formulation flag"),
         int_field("Inpts", 50, 0, 333, 0, "number of integration points", Dimension::Count),
-        int_field("Itetra4", 60, 0, 3, 0, "4-node tetra formulation flag"),
+        int_field("Itetra4", 60, 0, 3, 0, "4-node tetra formulation flag (0: constant strain; 3: average nodal pressure; 1, 2: not supported by hbm-solver)"),
         int_field("Iframe", 70, 0, 2, 0, "element frame flag"),
         real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
     }));
