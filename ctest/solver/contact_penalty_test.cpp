@@ -396,3 +396,50 @@ TEST(ContactPenalty, InactiSixStartsPenetratedNodesWithoutForce) {
   EXPECT_EQ(f5[0], 0.0);
   EXPECT_NEAR(f5[1], PenaltyContact::law_force(0.2 - 0.15, 0.2, kp, kmax, false), 1e-12);
 }
+
+// Inacti 6 during the run: a node that slides in past the edge of a shell (gap 0.5) at
+// 0.1 above it would find itself 0.4 deep in one cycle; it is treated as an initial
+// penetration (gap 0.95 d, no force, no potential made from nothing) and then feels the law
+// with that gap as it goes deeper. A node approaching the face along its normal by less
+// than PenaltyContact::kEntryJump g per cycle gets the full law; Inacti 0 pushes the
+// entering node at once.
+TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
+  const double kp = 100, g = 0.5, kmax = 100 * kp;
+  auto run = [&](int inacti, const std::vector<std::array<double, 2>>& xz, std::vector<double>& fz,
+                 std::vector<double>& u) {
+    NodalState n;
+    ContactSurface s = flat_quad(n, 1.0, 1.0, kp, false);
+    const Index node = add_node(n, {xz.front()[0], 0.0, xz.front()[1]}, 1e-3);
+    PenaltyContactParams p;
+    p.gapmin = g;
+    p.vis_s = 0;
+    p.inacti = inacti;
+    PenaltyContact c(s, {node}, p, n);
+    for (std::size_t k = 0; k < xz.size(); ++k) {
+      n.x.x[node] = xz[k][0];
+      n.x.z[node] = xz[k][1];
+      n.force.fill(0);
+      c.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
+      fz.push_back(n.force.z[node]);
+      u.push_back(c.elastic_energy());
+    }
+  };
+  const std::vector<std::array<double, 2>> slide = {{2.0, 0.1}, {1.02, 0.1}, {0.9, 0.1}, {0.9, 0.085}};
+  std::vector<double> f6, u6, f0, u0;
+  run(6, slide, f6, u6);
+  EXPECT_EQ(f6[0], 0.0);
+  EXPECT_EQ(f6[1], 0.0) << "entry past the edge: no force";
+  EXPECT_EQ(u6[1], 0.0) << "entry past the edge: no potential";
+  EXPECT_EQ(f6[2], 0.0);
+  const double d_entry = std::hypot(0.02, 0.1), g6 = 0.95 * d_entry;
+  EXPECT_NEAR(f6[3], PenaltyContact::law_force(g6 - 0.085, g6, kp, kmax, false), 1e-12);
+  run(0, slide, f0, u0);
+  // normal from the closest point on the edge: z share 0.1 / d
+  EXPECT_NEAR(f0[1], PenaltyContact::law_force(g - d_entry, g, kp, kmax, false) * 0.1 / d_entry, 1e-9);
+  EXPECT_GT(u0[1], 0.0);
+  const std::vector<std::array<double, 2>> approach = {{0.0, 0.6}, {0.0, 0.52}, {0.0, 0.44}, {0.0, 0.36}};
+  std::vector<double> fa, ua;
+  run(6, approach, fa, ua);
+  EXPECT_NEAR(fa[2], PenaltyContact::law_force(g - 0.44, g, kp, kmax, false), 1e-12);
+  EXPECT_NEAR(fa[3], PenaltyContact::law_force(g - 0.36, g, kp, kmax, false), 1e-12);
+}

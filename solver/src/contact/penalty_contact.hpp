@@ -14,7 +14,10 @@
 // included) so that the contact alone never pulls the node's nodal step
 // dt_n = Tsca sqrt(2 m / k) under the fixed step (f = cap fraction).
 // Inacti 5/6: an initially penetrated node starts with its gap reduced to (95 % of) its
-// distance, which then grows back as it moves away (no initial kick).
+// distance, which then grows back as it moves away (no initial kick). The same holds for a
+// node that enters a gap during the run deeper than kEntryJump of it in one cycle (past a
+// segment's edge, not by approaching it): "initial" is the first cycle of the penetration,
+// as LS-DYNA's IGNORE = 1 reads it; OpenRadioss applies Inacti at t = 0 only.
 // Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
 // mass of node and segment; the total normal force is kept compressive. Coulomb friction
 // (Fric) by a regularised stick-slip (elastic-plastic tangential spring): F_t += -K v_t dt,
@@ -109,6 +112,10 @@ class PenaltyContact {
   std::size_t n_candidates() const { return cand_segment_.size(); }
   std::size_t n_secondary() const { return secondary_.size(); }
   double margin() const { return margin_; }
+  std::size_t n_entry_caps() const { return n_entry_caps_; }
+  // Inacti 5/6: a penetration gained in one cycle beyond this fraction of the gap is an
+  // entry (past an edge), not an approach (add_forces).
+  static constexpr double kEntryJump = 0.2;
   double gap_of_pair(std::size_t secondary_slot, Index segment) const;
   const ContactSurface& surface() const { return surf_; }
 
@@ -177,6 +184,8 @@ class PenaltyContact {
   // Last cycle's force on each secondary node, its segment and weights (work update).
   std::vector<V3> prev_force_;
   std::vector<Index> prev_segment_;
+  std::vector<double> prev_pen_;       // penetration of the last cycle (0: not in contact)
+  std::size_t n_entry_caps_ = 0;       // Inacti 5/6: gaps reduced at an entry during the run
   std::vector<std::array<double, 4>> prev_weight_;
   std::vector<double> prev_damping_, prev_vn_;  // damping force (along prev normal), v_n
   std::vector<V3> prev_normal_;
