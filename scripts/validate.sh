@@ -6,6 +6,7 @@
 #
 #   scripts/validate.sh [--build DIR] [--work DIR] [--cases "NAME ..."|all] [--tstop MS]
 #                       [--model FILE] [--doc FILE|--no-doc] [--threads N] [--jobs N]
+#                       [--deck-hook SCRIPT]
 #
 # Defaults: build/, work folder out/validation, all cases, 60 ms, decks/hbm50/hbm50.inc,
 # docs/validation.md. With the default end time the decks are (re)generated in place in
@@ -13,12 +14,15 @@
 # --jobs N runs N cases at the same time (each solver then gets nproc/N threads, at least
 # 1; results do not depend on the thread count). Every step runs for every case and the
 # table is written in any case; the exit status is 0 only if every run terminated
-# normally and every rating was written, 1 otherwise, 2 on bad usage.
+# normally and every rating was written, 1 otherwise, 2 on bad usage. --deck-hook SCRIPT:
+# `bash SCRIPT CASE_0000.rad` runs on every generated case deck before the runs (a model
+# variant: deckgen/scripts/tetra_flesh_hook.sh); with --tstop only, so that the committed
+# decks are not touched.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 build=build work=out/validation cases=all tstop="" model=decks/hbm50/hbm50.inc doc=docs/validation.md
-threads="" jobs=1
+threads="" jobs=1 deck_hook=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build=$2; shift 2 ;;
@@ -30,7 +34,8 @@ while [[ $# -gt 0 ]]; do
     --no-doc) doc=""; shift ;;
     --threads) threads=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
-    -h|--help) sed -n '3,17p' "$0"; exit 0 ;;
+    --deck-hook) deck_hook=$2; shift 2 ;;
+    -h|--help) sed -n '3,20p' "$0"; exit 0 ;;
     *) echo "validate.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -49,6 +54,11 @@ for c in $cases; do
   [[ -n $tstop ]] && args+=(--tstop "$tstop")
   "$bin/hbm-loadcase" "${args[@]}" | tee "$work/runs/$c.loadcase.txt"
 done
+
+if [[ -n $deck_hook ]]; then
+  [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
+  for c in $cases; do bash "$deck_hook" "$decks/$c/${c}_0000.rad"; done
+fi
 
 # 2. runs (wall time measured here; the solver's own timing table is in its listing)
 run_case() {
