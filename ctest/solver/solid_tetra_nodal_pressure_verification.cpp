@@ -13,9 +13,7 @@
 //    compressible material (nu = 0.3) has; energy is conserved;
 //  - Itetra4 1 in a deck is an error naming file, line and field.
 #include "example_deck_runner.hpp"
-#include "hbm/solver/cycle.hpp"
-#include "loads/loads.hpp"
-#include "solid/brick_block.hpp"
+#include "solid_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,6 +27,8 @@
 namespace hbm::solver {
 namespace {
 
+using namespace testing;
+
 // The six tetras of a brick (nodes 0-3 bottom, 4-7 top) around its diagonal 0-6: each face
 // is cut along its diagonal through node 0 or node 6, so neighbouring bricks of a
 // structured block, all oriented alike, share their face diagonals.
@@ -38,17 +38,7 @@ constexpr int kKuhn[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4,
 // `distort` moves interior nodes before V0 and masses are computed.
 SolidGroup& make_tetra_block(Model& m, const BrickBlock& b, bool nodal_pressure, bool distort = false) {
   SolidGroup& bricks = make_brick_block(m, b);
-  if (distort)
-    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
-      const double x = m.nodes.x.x[i], y = m.nodes.x.y[i], z = m.nodes.x.z[i];
-      const double t = 1e-6 * (b.lx + b.ly + b.lz);
-      if (x > t && x < b.lx - t && y > t && y < b.ly - t && z > t && z < b.lz - t) {
-        m.nodes.x.x[i] += 2.0 * std::sin(0.3 * static_cast<double>(i));
-        m.nodes.x.y[i] += 1.5 * std::cos(0.7 * static_cast<double>(i));
-        m.nodes.x.z[i] -= 1.8 * std::sin(1.1 * static_cast<double>(i));
-      }
-    }
-  m.nodes.x0 = m.nodes.x;
+  if (distort) distort_interior(m, b);
   auto g = std::make_unique<SolidGroup>();
   g->keyword = "/TETRA4";
   g->part = 0;
@@ -85,65 +75,6 @@ SolidGroup& make_tetra_block(Model& m, const BrickBlock& b, bool nodal_pressure,
   m.groups[0] = std::move(g);
   build_incidence(m);
   return ref;
-}
-
-SolidMaterial flesh() {
-  SolidMaterial mat;
-  mat.rho = 1.02e-6;
-  mat.law = SolidLaw::Viscoelastic;
-  mat.set_viscoelastic(0.12875, 5.15e-6, 1.5e-6, 0.1);  // K, G0, Ginf [GPa], beta 100 /s
-  return mat;
-}
-
-BrickBlock patch_block(const SolidMaterial& mat) {
-  BrickBlock b;
-  b.nx = b.ny = b.nz = 3;
-  b.lx = b.ly = b.lz = 30;
-  b.material = mat;
-  return b;
-}
-
-// Largest net force on an interior node of the 30 mm block.
-double max_interior_force(const Model& m, const SolidGroup& g) {
-  std::vector<double> fx(m.nodes.n_nodes, 0.0), fy = fx, fz = fx;
-  for (std::size_t sl = 0; sl < g.connectivity.size(); ++sl) {
-    const auto n = static_cast<std::size_t>(g.connectivity[sl]);
-    fx[n] += g.slot_force.x[sl];
-    fy[n] += g.slot_force.y[sl];
-    fz[n] += g.slot_force.z[sl];
-  }
-  double f = 0.0;
-  for (std::size_t i = 0; i < fx.size(); ++i) {
-    const double x = m.nodes.x0.x[i], y = m.nodes.x0.y[i], z = m.nodes.x0.z[i];
-    if (x > 1 && x < 29 && y > 1 && y < 29 && z > 1 && z < 29)
-      f = std::max(f, std::sqrt(fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]));
-  }
-  return f;
-}
-
-// Drive the block with v = A (x - 15) (A fixed) for n steps of dt.
-void drive_linear(Model& m, SolidGroup& g, const double A[3][3], double dt, int n) {
-  NodalState& s = m.nodes;
-  StepContext step;
-  GroupStepResult res;
-  for (int k = 0; k <= n; ++k) {
-    for (std::size_t i = 0; i < s.n_nodes; ++i) {
-      const double r[3] = {s.x.x[i] - 15.0, s.x.y[i] - 15.0, s.x.z[i] - 15.0};
-      s.v.x[i] = A[0][0] * r[0] + A[0][1] * r[1] + A[0][2] * r[2];
-      s.v.y[i] = A[1][0] * r[0] + A[1][1] * r[1] + A[1][2] * r[2];
-      s.v.z[i] = A[2][0] * r[0] + A[2][1] * r[1] + A[2][2] * r[2];
-    }
-    if (k > 0) {
-      for (std::size_t i = 0; i < s.n_nodes; ++i) {
-        s.x.x[i] += dt * s.v.x[i];
-        s.x.y[i] += dt * s.v.y[i];
-        s.x.z[i] += dt * s.v.z[i];
-      }
-      step.dt_prev = dt;
-      step.time += dt;
-    }
-    g.compute_forces(step, s, res);
-  }
 }
 
 TEST(SolidTetraNodalPressurePatch, FleshCompressionGivesBulkPressure) {
@@ -187,72 +118,16 @@ TEST(SolidTetraNodalPressurePatch, FleshShearFollowsLaw34WithoutPressure) {
   EXPECT_LT(max_interior_force(m, g), 1e-4 * expect * 100.0);
 }
 
-struct BendingResult {
-  double f_fem = 0, f_beam = 0, energy_error = 0;
-};
-
-// Cantilever along x, L = 80, h = 10 (z), width 10 (y), nx x 1 x nz bricks of six tetras,
-// clamped at x = 0, y fixed everywhere (plane strain); initial velocity in the first beam
-// mode; frequency from two downward zero crossings of the tip.
-BendingResult cantilever(double nu, bool nodal_pressure, int nx, int nz, bool plane_strain = true) {
+// Cantilever 80 x 10 x 10 of nx x 1 x nz bricks of six tetras (solid_test_support.hpp).
+BendingResult cantilever(double nu, bool nodal_pressure, int nx, int nz, bool plane_strain) {
   Model m;
-  BrickBlock b;
-  b.nx = nx;
-  b.ny = 1;
-  b.nz = nz;
-  b.lx = 80;
-  b.ly = 10;
-  b.lz = 10;
-  b.material.rho = 1e-6;
-  b.material.set_elastic(0.2, nu);
+  const BrickBlock b = cantilever_block(nu, nx, nz);
   SolidGroup& g = make_tetra_block(m, b, nodal_pressure);
   g.qa = g.qb = 0.0;  // undamped
-  auto clamp = std::make_unique<FixedDofs>();
-  clamp->fixed = {true, true, true, false, false, false};
-  auto plane = std::make_unique<FixedDofs>();
-  plane->fixed = {false, true, false, false, false, false};
-  std::size_t tip = 0;
-  const double L = b.lx, beta = 1.8751 / L, sigma = 0.7341, v0 = 1e-3;
-  auto phi = [&](double x) {
-    const double s = beta * x;
-    return std::cosh(s) - std::cos(s) - sigma * (std::sinh(s) - std::sin(s));
-  };
-  const double phi_tip = phi(L);
-  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
-    const double x = m.nodes.x.x[i];
-    if (x < 1e-9) clamp->nodes.push_back(static_cast<Index>(i));
-    if (plane_strain) plane->nodes.push_back(static_cast<Index>(i));
-    m.nodes.v.z[i] = v0 * phi(x) / phi_tip;
-    if (x > L - 1e-9 && m.nodes.x.y[i] < 1e-9 &&
-        (m.nodes.x.x[tip] < L - 1e-9 || std::abs(m.nodes.x.z[i] - 5.0) < std::abs(m.nodes.x.z[tip] - 5.0)))
-      tip = i;
-  }
-  m.constraints.push_back(std::move(clamp));
-  m.constraints.push_back(std::move(plane));
-  m.control.dt_scale = 0.9;
-  BendingResult r;
-  const double E1 = plane_strain ? 0.2 / (1.0 - nu * nu) : 0.2, h = b.lz;
-  r.f_beam = 1.8751 * 1.8751 / (2.0 * std::numbers::pi) * std::sqrt(E1 * h * h / (12.0 * b.material.rho * std::pow(L, 4)));
-  CycleState c;
-  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i)
-    c.energies.initial_total += 0.5 * m.nodes.mass[i] * m.nodes.v.z[i] * m.nodes.v.z[i];
-  std::vector<double> down;
-  double z_prev = 0.0, t_prev = 0.0;
-  const double t_end = 4.0 / r.f_beam;
-  while (c.step.time < t_end) {
-    run_cycle(m, c);
-    const double zt = m.nodes.x.z[tip] - m.nodes.x0.z[tip];
-    const double t = c.step.time;
-    if (z_prev > 0.0 && zt <= 0.0) down.push_back(t_prev + (t - t_prev) * z_prev / (z_prev - zt));
-    z_prev = zt;
-    t_prev = t;
-    if (c.stop != StopReason::None || down.size() >= 2) break;
-  }
-  r.f_fem = down.size() >= 2 ? 1.0 / (down[1] - down[0]) : 0.0;
-  r.energy_error = c.energies.energy_error();
-  std::printf("tetra nu %.4f nodal pressure %d plane strain %d mesh %dx1x%d: f %.5f beam %.5f ratio %.4f energy error %.2e cycles %lld\n", nu,
-              nodal_pressure ? 1 : 0, plane_strain ? 1 : 0, nx, nz, r.f_fem, r.f_beam, r.f_fem / r.f_beam, r.energy_error,
-              static_cast<long long>(c.step.cycle));
+  const BendingResult r = run_cantilever(m, b, plane_strain);
+  std::printf("tetra nu %.4f nodal pressure %d plane strain %d mesh %dx1x%d: f %.5f beam %.5f ratio %.4f energy error %.2e cycles %lld\n",
+              nu, nodal_pressure ? 1 : 0, plane_strain ? 1 : 0, nx, nz, r.f_fem, r.f_beam, r.f_fem / r.f_beam,
+              r.energy_error, r.cycles);
   return r;
 }
 

@@ -103,7 +103,7 @@ bool read_solid_property(BuildContext& ctx, const Part& part, int nodes_per_elem
     case 0: break;
     case 1: g.hourglass = HourglassForm::Viscous; break;
     case 2: g.hourglass = HourglassForm::Stiffness; break;
-    case 14: break;  // bricks: BrickHa8Group (is_ha8); tetras: constant strain, no hourglass
+    case 14: break;  // bricks: BrickHa8Group (is_ha8); tetras: no hourglass (Itetra4 below)
     case 24: g.hourglass = HourglassForm::Physical; break;
     default:
       ctx.error(*p, p->lines.at(0), "Isolid",

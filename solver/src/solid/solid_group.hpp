@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Solid element group: 8-node bricks (one-point Flanagan-Belytschko, degenerate prism /
-// tetra shapes allowed) or 4-node constant-strain tetrahedra, of one part.
+// tetra shapes allowed) or 4-node tetrahedra (constant strain, or with Itetra4 3 the
+// average nodal pressure: nodal_pressure_average.hpp), of one part.
 // Struct of arrays; the kernel in solid_group.cpp runs per chunk of kChunk elements, the
 // brick kernel as loops over the chunk's elements (lanes) that the compiler vectorises.
 //
