@@ -43,17 +43,8 @@ BrickHa8Group& make_ha8_block(Model& m, const BrickBlock& b, bool distort = fals
   g->material = b.material;
   g->connectivity = one.connectivity;
   g->element_id = one.element_id;
-  g->n_elements = one.n_elements;
   if (distort) distort_interior(m, b);
-  EXPECT_EQ(g->initialize(m.nodes), kNoIndex);
-  std::fill(m.nodes.mass0.begin(), m.nodes.mass0.end(), 0.0);
-  for (std::size_t e = 0; e < g->n_elements; ++e)
-    for (int a = 0; a < 8; ++a) m.nodes.mass0[static_cast<std::size_t>(g->connectivity[e * 8 + a])] += g->mass[e] / 8;
-  m.nodes.mass = m.nodes.mass0;
-  BrickHa8Group& ref = *g;
-  m.groups[0] = std::move(g);
-  build_incidence(m);
-  return ref;
+  return replace_block_group(m, std::move(g));
 }
 
 TEST(SolidHa8Patch, LinearFieldGivesUniformStressAndInteriorEquilibrium) {

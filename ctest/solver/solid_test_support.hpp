@@ -9,6 +9,8 @@
 #include "loads/loads.hpp"
 #include "solid/brick_block.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -47,6 +49,24 @@ inline void distort_interior(Model& m, const BrickBlock& b) {
     }
   }
   m.nodes.x0 = m.nodes.x;
+}
+
+// Puts g (its connectivity set) in place of the block's brick group m.groups[0]: V0 and
+// masses on the current positions, lumped nodal masses rho V0 / n, incidence rebuilt.
+template <class Group>
+Group& replace_block_group(Model& m, std::unique_ptr<Group> g) {
+  const std::size_t npe = g->nodes_per_element;
+  g->n_elements = g->connectivity.size() / npe;
+  EXPECT_EQ(g->initialize(m.nodes), kNoIndex);
+  std::fill(m.nodes.mass0.begin(), m.nodes.mass0.end(), 0.0);
+  for (std::size_t e = 0; e < g->n_elements; ++e)
+    for (std::size_t a = 0; a < npe; ++a)
+      m.nodes.mass0[static_cast<std::size_t>(g->connectivity[e * npe + a])] += g->mass[e] / static_cast<double>(npe);
+  m.nodes.mass = m.nodes.mass0;
+  Group& ref = *g;
+  m.groups[0] = std::move(g);
+  build_incidence(m);
+  return ref;
 }
 
 // Largest net force on an interior node of the 30 mm block.

@@ -65,16 +65,7 @@ SolidGroup& make_tetra_block(Model& m, const BrickBlock& b, bool nodal_pressure,
       for (Index k : n) g->connectivity.push_back(k);
       g->element_id.push_back(static_cast<std::int64_t>(g->element_id.size()) + 1);
     }
-  g->n_elements = g->element_id.size();
-  EXPECT_EQ(g->initialize(m.nodes), kNoIndex);
-  std::fill(m.nodes.mass0.begin(), m.nodes.mass0.end(), 0.0);
-  for (std::size_t e = 0; e < g->n_elements; ++e)
-    for (int a = 0; a < 4; ++a) m.nodes.mass0[static_cast<std::size_t>(g->connectivity[e * 4 + a])] += g->mass[e] / 4;
-  m.nodes.mass = m.nodes.mass0;
-  SolidGroup& ref = *g;
-  m.groups[0] = std::move(g);
-  build_incidence(m);
-  return ref;
+  return replace_block_group(m, std::move(g));
 }
 
 TEST(SolidTetraNodalPressurePatch, FleshCompressionGivesBulkPressure) {
