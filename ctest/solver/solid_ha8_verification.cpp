@@ -147,35 +147,11 @@ TEST(SolidHa8Bending, GaussPointPressureLocks) {
 }
 
 TEST(SolidHa8Threads, OneAndTwoThreadsBitwiseIdentical) {
-  auto run = [](int threads, std::vector<double>& out) {
-    omp_set_num_threads(threads);
-    Model m;
-    BrickBlock b;
-    b.nx = 16;
-    b.ny = 16;
-    b.nz = 8;  // 2048 elements: 16 chunks, parallel
-    b.lx = b.ly = 30;
-    b.lz = 15;
-    b.material = flesh();
-    BrickHa8Group& g = make_ha8_block(m, b);
-    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
-      m.nodes.v.x[i] = 1e-3 * std::sin(0.37 * static_cast<double>(i));
-      m.nodes.v.y[i] = 1e-3 * std::cos(0.23 * static_cast<double>(i));
-      m.nodes.v.z[i] = -2e-3 * std::sin(0.11 * static_cast<double>(i));
-    }
-    CycleState c;
-    for (int k = 0; k < 200; ++k) run_cycle(m, c);
-    out.clear();
-    for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
-      out.push_back(m.nodes.x.x[i]);
-      out.push_back(m.nodes.v.z[i]);
-    }
-    out.insert(out.end(), g.sig.begin(), g.sig.end());
-    out.push_back(c.energies.internal);
+  auto build = [](Model& m, const BrickBlock& b) {
+    BrickHa8Group* g = &make_ha8_block(m, b);
+    return [g](std::vector<double>& out) { out.insert(out.end(), g->sig.begin(), g->sig.end()); };
   };
-  std::vector<double> a, b;
-  run(1, a);
-  run(2, b);
+  const std::vector<double> a = run_block_on_threads(1, build), b = run_block_on_threads(2, build);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
 }

@@ -10,6 +10,7 @@
 #include "solid/brick_block.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -185,6 +186,39 @@ inline BendingResult run_cantilever(Model& m, const BrickBlock& b, bool plane_st
   r.hourglass = c.energies.hourglass;
   r.cycles = static_cast<long long>(c.step.cycle);
   return r;
+}
+
+// 200 cycles of a 30 x 30 x 15 flesh block of 16 x 16 x 8 cells (2048 bricks: 16 chunks,
+// run in parallel) on `threads` threads, from a fixed field of small velocities. `build(m, b)`
+// makes the block's group and returns a callable that appends the group's state to a vector.
+// Returns nodal x and v_z, that state and the internal energy, for a bitwise comparison.
+template <class Build>
+std::vector<double> run_block_on_threads(int threads, Build build) {
+  omp_set_num_threads(threads);
+  Model m;
+  BrickBlock b;
+  b.nx = 16;
+  b.ny = 16;
+  b.nz = 8;
+  b.lx = b.ly = 30;
+  b.lz = 15;
+  b.material = flesh();
+  auto append_state = build(m, b);
+  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+    m.nodes.v.x[i] = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+    m.nodes.v.y[i] = 1e-3 * std::cos(0.23 * static_cast<double>(i));
+    m.nodes.v.z[i] = -2e-3 * std::sin(0.11 * static_cast<double>(i));
+  }
+  CycleState c;
+  for (int k = 0; k < 200; ++k) run_cycle(m, c);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
+    out.push_back(m.nodes.x.x[i]);
+    out.push_back(m.nodes.v.z[i]);
+  }
+  append_state(out);
+  out.push_back(c.energies.internal);
+  return out;
 }
 
 }  // namespace hbm::solver::testing

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -139,6 +140,20 @@ TEST(SolidTetraNodalPressureBending, ElementPressureLocks) {
   const BendingResult b = cantilever(0.499, false, 32, 4, false);
   EXPECT_GT((b.f_fem / b.f_beam) / (a.f_fem / a.f_beam), 2.5)
       << "nu 0.499 ratio " << b.f_fem / b.f_beam << " nu 0.3 ratio " << a.f_fem / a.f_beam;
+}
+
+// 12 288 tetras in 96 chunks, each a batch of lanes, and the serial nodal volume pass.
+TEST(SolidTetraNodalPressureThreads, OneAndTwoThreadsBitwiseIdentical) {
+  auto build = [](Model& m, const BrickBlock& b) {
+    SolidGroup* g = &make_tetra_block(m, b, true);
+    return [g](std::vector<double>& out) {
+      for (const auto& c : g->sig) out.insert(out.end(), c.begin(), c.end());
+      for (const auto& c : g->hist) out.insert(out.end(), c.begin(), c.end());
+    };
+  };
+  const std::vector<double> a = run_block_on_threads(1, build), b = run_block_on_threads(2, build);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
 }
 
 TEST(SolidTetraNodalPressureDeck, UnsupportedItetra4IsADeckError) {

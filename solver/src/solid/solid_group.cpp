@@ -259,12 +259,270 @@ void SolidGroup::cell_field(CellField field, std::span<double> out) const {
   }
 }
 
-// One chunk of 4-node tetrahedra, element by element.
+// Lanes of one batch of 4-node tetras ([component][lane], as BrickLanes): each stage of
+// compute_tetra_lanes is a loop over the lanes that the compiler vectorises. One per thread.
+struct TetraLanes {
+  static constexpr std::size_t W = 32;
+  alignas(64) double x[4][W], y[4][W], z[4][W], vx[4][W], vy[4][W], vz[4][W];
+  alignas(64) double bx[4][W], by[4][W], bz[4][W];   // volume gradient, current configuration
+  alignas(64) double mx[4][W], my[4][W], mz[4][W];   // volume gradient, mid-step configuration
+  alignas(64) double fx[4][W], fy[4][W], fz[4][W];   // mid-step coordinates, then nodal forces
+  alignas(64) double d[6][W], w[3][W], sig[6][W], hist[6][W], s_new[6][W];
+  alignas(64) double V[W], Vm[W], amax2[W], am2[W], ok[W], mv[W], vol_free[W], shift_on[W], mlj[W];
+  alignas(64) double mass[W], q_old[W], de[W], dte[W], ks[W];
+};
+
+namespace {
+
+// Volume gradient b_I = dV/dx_I of the lanes' tetras (tetra_volume_gradient per lane),
+// volume and the largest |b_I|^2 (= (face area / 3)^2).
+template <class LaneCount>
+inline void tetra_gradient_lanes(LaneCount lane_count, const double (*x)[TetraLanes::W], const double (*y)[TetraLanes::W],
+                                 const double (*z)[TetraLanes::W], double (*bx)[TetraLanes::W], double (*by)[TetraLanes::W],
+                                 double (*bz)[TetraLanes::W], double* V, double* amax2) {
+  const std::size_t n = lane_count;
+  for (std::size_t l = 0; l < n; ++l) {
+    const double ax = x[1][l] - x[0][l], ay = y[1][l] - y[0][l], az = z[1][l] - z[0][l];
+    const double cx = x[2][l] - x[0][l], cy = y[2][l] - y[0][l], cz = z[2][l] - z[0][l];
+    const double dx = x[3][l] - x[0][l], dy = y[3][l] - y[0][l], dz = z[3][l] - z[0][l];
+    const double b1x = (cy * dz - cz * dy) / 6.0, b1y = (cz * dx - cx * dz) / 6.0, b1z = (cx * dy - cy * dx) / 6.0;
+    const double b2x = (dy * az - dz * ay) / 6.0, b2y = (dz * ax - dx * az) / 6.0, b2z = (dx * ay - dy * ax) / 6.0;
+    const double b3x = (ay * cz - az * cy) / 6.0, b3y = (az * cx - ax * cz) / 6.0, b3z = (ax * cy - ay * cx) / 6.0;
+    const double b0x = -(b1x + b2x + b3x), b0y = -(b1y + b2y + b3y), b0z = -(b1z + b2z + b3z);
+    bx[0][l] = b0x; by[0][l] = b0y; bz[0][l] = b0z;
+    bx[1][l] = b1x; by[1][l] = b1y; bz[1][l] = b1z;
+    bx[2][l] = b2x; by[2][l] = b2y; bz[2][l] = b2z;
+    bx[3][l] = b3x; by[3][l] = b3y; bz[3][l] = b3z;
+    V[l] = ax * b1x + ay * b1y + az * b1z;
+    const double m0 = b0x * b0x + b0y * b0y + b0z * b0z, m1 = b1x * b1x + b1y * b1y + b1z * b1z;
+    const double m2 = b2x * b2x + b2y * b2y + b2z * b2z, m3 = b3x * b3x + b3y * b3y + b3z * b3z;
+    amax2[l] = std::max(std::max(m0, m1), std::max(m2, m3));
+  }
+}
+
+}  // namespace
+
+// 4-node tetras of one chunk: LAW1 and LAW34 in batches of lanes, the plastic laws element
+// by element (radial return).
 void SolidGroup::compute_tetra_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                                      double& e_int_inc, double& dt_min, Index& dt_elem, Index& inverted) {
+  const std::size_t e_begin = chunk * kChunk, e_end = std::min(n_elements, e_begin + kChunk);
+  if (material.plastic()) {
+    compute_tetra_scalar(e_begin, e_end, step, nodes, e_int_inc, dt_min, dt_elem, inverted);
+    return;
+  }
+  for (std::size_t e0 = e_begin; e0 < e_end; e0 += TetraLanes::W) {
+    const std::size_t n = std::min(TetraLanes::W, e_end - e0);
+    if (n == TetraLanes::W)
+      compute_tetra_lanes(e0, std::integral_constant<std::size_t, TetraLanes::W>{}, step, nodes, e_int_inc, dt_min,
+                          dt_elem, inverted);
+    else
+      compute_tetra_lanes(e0, n, step, nodes, e_int_inc, dt_min, dt_elem, inverted);
+  }
+}
+
+// Tetras e0 .. e0+n-1 as lanes (LAW1, LAW34): the arithmetic of compute_tetra_scalar, stage
+// by stage. Deleted or inverted lanes are computed on finite stand-in values and masked.
+template <class LaneCount>
+void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
+                                     const NodalState& nodes, double& e_int_inc, double& dt_min, Index& dt_elem,
+                                     Index& inverted) {
+  constexpr std::size_t W = TetraLanes::W;
+  const std::size_t n = lane_count;
+  static thread_local TetraLanes lanes;
+  TetraLanes& b = lanes;
+  const double dt = step.dt_prev;
+  const SolidMaterial& mat = material;
+  const bool visco = mat.viscoelastic();
+  const bool frozen_any = frozen_geometry.active();
+  for (std::size_t l = 0; l < n; ++l) {
+    const Index* conn = &connectivity[(e0 + l) * 4];
+    const bool fr = frozen_any && frozen_geometry.frozen[e0 + l];
+    const double* xf = fr ? &frozen_geometry.x[(e0 + l) * 12] : nullptr;
+    for (int i = 0; i < 4; ++i) {
+      const auto k = static_cast<std::size_t>(conn[i]);
+      b.x[i][l] = fr ? xf[3 * i] : nodes.x.x[k];
+      b.y[i][l] = fr ? xf[3 * i + 1] : nodes.x.y[k];
+      b.z[i][l] = fr ? xf[3 * i + 2] : nodes.x.z[k];
+      b.vx[i][l] = nodes.v.x[k]; b.vy[i][l] = nodes.v.y[k]; b.vz[i][l] = nodes.v.z[k];
+    }
+    b.mv[l] = fr ? 0.0 : 1.0;
+    // Nodal pressure: the material sees no volume change and the mean stress is set from
+    // the nodes (not for a switched tetra: its own small strain pressure).
+    const bool np = nodal_pressure.enabled && !fr;
+    b.vol_free[l] = np ? 0.0 : 1.0;
+    b.shift_on[l] = np ? 1.0 : 0.0;
+    b.mlj[l] = np ? nodal_pressure.mean_log_j(e0 + l) : 0.0;
+  }
+  for (int k = 0; k < 6; ++k) brick::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
+  if (visco)
+    for (int k = 0; k < 6; ++k) brick::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
+  else
+    for (int k = 0; k < 6; ++k) std::fill_n(b.hist[k], n, 0.0);
+  brick::copy_lanes(n, mass.data() + e0, b.mass);
+  brick::copy_lanes(n, q_bulk.data() + e0, b.q_old);
+
+  tetra_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
+  for (std::size_t l = 0; l < n; ++l) {
+    const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
+    if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
+    b.ok[l] = good ? 1.0 : 0.0;
+    b.V[l] = good ? b.V[l] : 1.0;  // masked lanes: finite values only
+    b.amax2[l] = good ? b.amax2[l] : 1.0;
+  }
+  // Velocity gradient on the mid-step configuration x - dt/2 v (current one if its volume
+  // is not positive, and for a switched tetra, whose shape is frozen).
+  if (dt > 0.0) {
+    const double hdt = 0.5 * dt;
+    for (int i = 0; i < 4; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        b.fx[i][l] = b.x[i][l] - hdt * b.mv[l] * b.vx[i][l];
+        b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
+        b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
+      }
+    tetra_gradient_lanes(lane_count, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.am2);
+    for (int i = 0; i < 4; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        const bool mid = b.Vm[l] > 0.0;
+        b.mx[i][l] = mid ? b.mx[i][l] : b.bx[i][l];
+        b.my[i][l] = mid ? b.my[i][l] : b.by[i][l];
+        b.mz[i][l] = mid ? b.mz[i][l] : b.bz[i][l];
+      }
+    for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
+  } else {
+    for (int i = 0; i < 4; ++i) {
+      brick::copy_lanes(n, b.bx[i], b.mx[i]);
+      brick::copy_lanes(n, b.by[i], b.my[i]);
+      brick::copy_lanes(n, b.bz[i], b.mz[i]);
+    }
+    brick::copy_lanes(n, b.V, b.Vm);
+  }
+  for (std::size_t l = 0; l < n; ++l) {
+    double L[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+      L[0] += b.vx[i][l] * b.mx[i][l]; L[1] += b.vx[i][l] * b.my[i][l]; L[2] += b.vx[i][l] * b.mz[i][l];
+      L[3] += b.vy[i][l] * b.mx[i][l]; L[4] += b.vy[i][l] * b.my[i][l]; L[5] += b.vy[i][l] * b.mz[i][l];
+      L[6] += b.vz[i][l] * b.mx[i][l]; L[7] += b.vz[i][l] * b.my[i][l]; L[8] += b.vz[i][l] * b.mz[i][l];
+    }
+    const double iv = 1.0 / b.Vm[l];
+    for (double& v : L) v *= iv;
+    b.d[0][l] = L[0]; b.d[1][l] = L[4]; b.d[2][l] = L[8];
+    b.d[3][l] = 0.5 * (L[1] + L[3]); b.d[4][l] = 0.5 * (L[5] + L[7]); b.d[5][l] = 0.5 * (L[6] + L[2]);
+    b.w[0][l] = 0.5 * (L[1] - L[3]); b.w[1][l] = 0.5 * (L[5] - L[7]); b.w[2][l] = 0.5 * (L[6] - L[2]);
+  }
+  // Stress update (LAW1, LAW34 as in the brick lanes: Jaumann rotation, deviatoric and
+  // volumetric parts, the hereditary deviator with the step's constants hoisted), with the
+  // old total stress power first for the trapezoidal internal energy.
+  const double x = mat.beta * dt;
+  const double decay = visco ? std::exp(-x) : 0.0;
+  const double gain = visco ? ((x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x) : 0.0;
+  const double two_g = 2.0 * (visco ? mat.Ginf : mat.G);
+  const double two_gh = visco ? 2.0 * (mat.G0 - mat.Ginf) * gain : 0.0;
+  const double K = mat.K;
+  const bool update = dt > 0.0;
+  for (std::size_t l = 0; l < n; ++l) {
+    const double s[6] = {b.sig[0][l], b.sig[1][l], b.sig[2][l], b.sig[3][l], b.sig[4][l], b.sig[5][l]};
+    const double h[6] = {b.hist[0][l], b.hist[1][l], b.hist[2][l], b.hist[3][l], b.hist[4][l], b.hist[5][l]};
+    const double d0 = b.d[0][l], d1 = b.d[1][l], d2 = b.d[2][l], d3 = b.d[3][l], d4 = b.d[4][l], d5 = b.d[5][l];
+    b.de[l] = (s[0] + h[0]) * d0 + (s[1] + h[1]) * d1 + (s[2] + h[2]) * d2 +
+              2.0 * ((s[3] + h[3]) * d3 + (s[4] + h[4]) * d4 + (s[5] + h[5]) * d5);
+    if (!update) {
+      for (int k = 0; k < 6; ++k) b.s_new[k][l] = s[k] + h[k];
+      continue;
+    }
+    double rot[6], hrot[6];
+    jaumann_increment(s, b.w[0][l], b.w[1][l], b.w[2][l], dt, rot);
+    jaumann_increment(h, b.w[0][l], b.w[1][l], b.w[2][l], dt, hrot);
+    const double dv = (d0 + d1 + d2) * dt;
+    const double dev[6] = {d0 * dt - dv / 3.0, d1 * dt - dv / 3.0, d2 * dt - dv / 3.0, d3 * dt, d4 * dt, d5 * dt};
+    const double kdv = K * dv * b.vol_free[l];
+    const double shift = b.shift_on[l] * (K * b.mlj[l] - (s[0] + s[1] + s[2]) / 3.0);
+    for (int k = 0; k < 6; ++k) {
+      const double sn = s[k] + rot[k] + two_g * dev[k] + (k < 3 ? kdv + shift : 0.0);
+      const double hn = visco ? decay * (h[k] + hrot[k]) + two_gh * dev[k] : 0.0;
+      b.sig[k][l] = sn;
+      b.hist[k][l] = hn;
+      b.s_new[k][l] = sn + hn;
+    }
+  }
+  // Bulk viscosity, internal energy, forces, critical step (see compute_tetra_scalar).
+  const double qa2 = qa * qa, qb_ = qb, lambda = mat.lambda, G = mat.G, M = mat.wave_modulus();
+  for (std::size_t l = 0; l < n; ++l) {
+    const double V = b.V[l], inv_v = 1.0 / V;
+    const double lc = 3.0 * V / (3.0 * std::sqrt(b.amax2[l]));  // 3 V / largest face area
+    const double rho = b.mass[l] * inv_v, c = std::sqrt(M / rho);
+    const double d0 = b.d[0][l], d1 = b.d[1][l], d2 = b.d[2][l];
+    const double dv = d0 + d1 + d2;
+    const bool comp = dv < 0.0;
+    const double q = comp ? rho * lc * (qa2 * lc * dv * dv - qb_ * c * dv) : 0.0;
+    const double qv = comp ? qb_ * c + qa2 * lc * (-dv) : 0.0;
+    const double s0 = b.s_new[0][l], s1 = b.s_new[1][l], s2 = b.s_new[2][l];
+    const double s3 = b.s_new[3][l], s4 = b.s_new[4][l], s5 = b.s_new[5][l];
+    const double p_new = s0 * d0 + s1 * d1 + s2 * d2 + 2.0 * (s3 * b.d[3][l] + s4 * b.d[4][l] + s5 * b.d[5][l]);
+    b.de[l] = (0.5 * (b.de[l] + p_new) - 0.5 * (b.q_old[l] + q) * dv) * b.Vm[l] * dt;
+    b.q_old[l] = q;
+    const double sxx = s0 - q, syy = s1 - q, szz = s2 - q;
+    double txx = 0, tyy = 0, tzz = 0, txy = 0, tyz = 0, tzx = 0;
+    for (int i = 0; i < 4; ++i) {
+      const double gx = b.bx[i][l], gy = b.by[i][l], gz = b.bz[i][l];
+      b.fx[i][l] = -(sxx * gx + s3 * gy + s5 * gz) * b.ok[l];
+      b.fy[i][l] = -(s3 * gx + syy * gy + s4 * gz) * b.ok[l];
+      b.fz[i][l] = -(s5 * gx + s4 * gy + szz * gz) * b.ok[l];
+      txx += gx * gx; tyy += gy * gy; tzz += gz * gz;
+      txy += gx * gy; tyz += gy * gz; tzx += gz * gx;
+    }
+    // Rayleigh quotient of the dilatational mode (compute_tetra_scalar).
+    const double iv2 = inv_v * inv_v;
+    const double trT = (txx + tyy + tzz) * iv2;
+    const double TT = (txx * txx + tyy * tyy + tzz * tzz + 2.0 * (txy * txy + tyz * tyz + tzx * tzx)) * iv2 * iv2;
+    const double omega2 = 4.0 * (lambda * trT * trT + 2.0 * G * TT) / (rho * trT);
+    const double l_eff = 2.0 * c / std::sqrt(omega2);
+    const double dte = l_eff / (qv + std::sqrt(qv * qv + c * c));
+    b.dte[l] = dte;
+    b.ks[l] = b.ok[l] * 2.0 * (b.mass[l] / 4.0) / (dte * dte);
+  }
+  // Write back (masked lanes keep their state), switch, slots, reductions in element order.
+  double sum_int = e_int_inc, step_min = dt_min;
+  Index step_elem = dt_elem;
+  for (std::size_t l = 0; l < n; ++l) {
+    const std::size_t e = e0 + l, s0 = e * 4;
+    for (int i = 0; i < 4; ++i) {
+      slot_force.x[s0 + i] = b.fx[i][l];
+      slot_force.y[s0 + i] = b.fy[i][l];
+      slot_force.z[s0 + i] = b.fz[i][l];
+      slot_stiffness[s0 + i] = b.ks[l];
+    }
+    if (b.ok[l] == 0.0) continue;
+    for (int k = 0; k < 6; ++k) sig[k][e] = b.sig[k][l];
+    if (visco)
+      for (int k = 0; k < 6; ++k) hist[k][e] = b.hist[k][l];
+    q_bulk[e] = b.q_old[l];
+    e_int[e] += b.de[l];
+    sum_int += b.de[l];
+    if (b.dte[l] < step_min) {
+      step_min = b.dte[l];
+      step_elem = static_cast<Index>(e);
+    }
+    if (b.mv[l] != 0.0 && small_strain.enabled && small_strain.triggers(b.dte[l], b.V[l] / volume0[e])) {
+      double* xf = &frozen_geometry.x[e * 12];
+      for (int i = 0; i < 4; ++i) {
+        xf[3 * i] = b.x[i][l]; xf[3 * i + 1] = b.y[i][l]; xf[3 * i + 2] = b.z[i][l];
+      }
+      frozen_geometry.frozen[e] = 1;
+      small_strain_volume[e] = b.V[l];
+    }
+  }
+  e_int_inc = sum_int;
+  dt_min = step_min;
+  dt_elem = step_elem;
+  (void)W;
+}
+
+// Tetras e_begin .. e_end-1 element by element (all laws; the plastic ones use it).
+void SolidGroup::compute_tetra_scalar(std::size_t e_begin, std::size_t e_end, const StepContext& step,
+                                      const NodalState& nodes, double& e_int_inc, double& dt_min, Index& dt_elem,
+                                      Index& inverted) {
   constexpr int NPE = 4;
-  const std::size_t e_begin = chunk * kChunk;
-  const std::size_t e_end = std::min(n_elements, e_begin + kChunk);
   const double dt = step.dt_prev;
   const SolidMaterial& mat = material;
   const bool visco = mat.viscoelastic(), plastic = mat.plastic();

@@ -92,9 +92,16 @@ class SolidGroup final : public ElementGroup {
   void compute_brick_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
                            const NodalState& nodes, double& e_int_inc, double& e_hg_inc,
                            double& dt_min, Index& dt_elem, Index& inverted);
-  // 4-node tetrahedra: one chunk element by element.
+  // 4-node tetrahedra: one chunk, in batches of lanes (LAW1, LAW34) or element by element.
   void compute_tetra_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,
                            double& e_int_inc, double& dt_min, Index& dt_elem, Index& inverted);
+  template <class LaneCount>
+  void compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
+                           const NodalState& nodes, double& e_int_inc, double& dt_min, Index& dt_elem,
+                           Index& inverted);
+  void compute_tetra_scalar(std::size_t e_begin, std::size_t e_end, const StepContext& step,
+                            const NodalState& nodes, double& e_int_inc, double& dt_min, Index& dt_elem,
+                            Index& inverted);
 };
 
 }  // namespace hbm::solver
