@@ -437,6 +437,29 @@ TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
   // normal from the closest point on the edge: z share 0.1 / d
   EXPECT_NEAR(f0[1], PenaltyContact::law_force(g - d_entry, g, kp, kmax, false) * 0.1 / d_entry, 1e-9);
   EXPECT_GT(u0[1], 0.0);
+  // A solid face (one-sided, linear law): a node that slides in under it, 0.1 behind the face,
+  // gets the gap 0.95 x (-0.1), no force at the entry, then the small push the law gives at
+  // p = 0.005 (as an initially penetrated node would).
+  {
+    NodalState n;
+    ContactSurface s = flat_quad(n, 1.0, 1.0, kp, true);
+    const Index node = add_node(n, {2.0, 0.0, -0.1}, 1e-3);
+    PenaltyContactParams p;
+    p.gapmin = g;
+    p.vis_s = 0;
+    p.inacti = 6;
+    PenaltyContact c(s, {node}, p, n);
+    std::vector<double> fs;
+    for (double xk : {2.0, 0.9, 0.9}) {
+      n.x.x[node] = xk;
+      n.force.fill(0);
+      c.add_forces(n, 1e-3 * static_cast<double>(fs.size()), 1e-3);
+      fs.push_back(n.force.z[node]);
+    }
+    EXPECT_EQ(fs[1], 0.0) << "entry under a solid face: no force";
+    EXPECT_NEAR(fs[2], PenaltyContact::law_force(0.95 * -0.1 + 0.1, 0.95 * -0.1, kp, kmax, true), 1e-12);
+    EXPECT_GT(fs[2], 0.0) << "pushed back out of the solid";
+  }
   const std::vector<std::array<double, 2>> approach = {{0.0, 0.6}, {0.0, 0.52}, {0.0, 0.44}, {0.0, 0.36}};
   std::vector<double> fa, ua;
   run(6, approach, fa, ua);

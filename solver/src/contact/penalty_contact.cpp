@@ -362,7 +362,7 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     // gap (+inf if none), from which the cap is set at the first cycle and raised after.
     Index best_seg = kNoIndex;
     SegmentProjection best{};
-    double best_abs = 0, best_pen = 0, best_gap = 0, best_full_gap = 0;
+    double best_abs = 0, best_pen = 0, best_gap = 0, best_full_gap = 0, best_signed = 0;
     V3 best_n{};
     double near_d = std::numeric_limits<double>::infinity();
     const bool capped = !gap_cap_.empty();
@@ -385,19 +385,21 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
         best_pen = pen;
         best_gap = ge;
         best_full_gap = g;
+        best_signed = signed_d;
         best_n = n;
       }
     }
     // Inacti 5/6 during the run: a node that enters a segment's gap deeper than
     // kEntryJump g (full gap) in one cycle beyond its last penetration (it came past the segment's
     // edge, or its closest segment changed to one it is deep inside) is treated as an
-    // initial penetration: its gap is reduced to f d, no force this cycle. An approaching
+    // initial penetration: its gap is reduced to f d (d signed: negative for a node past a
+    // solid face, as at t = 0), no force this cycle. An approaching
     // node gains v dt of penetration per cycle (0.015 mm at 10 m/s). Without this the
     // potential of the penetration found (up to ~10 J for a node near a shell's
     // mid-surface under the stiffening law) appears at once: energy made from nothing.
     if (capped && best_seg != kNoIndex && gap_cap_set_ && best_pen - prev_pen_[i] > kEntryJump * best_full_gap &&
-        best_abs > 0.0) {
-      gap_cap_[i] = gap_cap_factor() * best_abs;
+        best_signed != 0.0) {
+      gap_cap_[i] = gap_cap_factor() * best_signed;
       ++n_entry_caps_;
       best_seg = kNoIndex;
     }
