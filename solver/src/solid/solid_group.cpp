@@ -89,6 +89,59 @@ struct BrickLanes {
 };
 
 
+// Stages the brick and tetra lane kernels share (Lanes: BrickLanes or TetraLanes, NPE nodes).
+// Deleted or inverted lanes: ok = 0 and finite stand-ins for V and amax2; the first alive
+// element with a non-positive volume is reported in `inverted`.
+template <class Lanes, class LaneCount>
+inline void mask_lanes(Lanes& b, LaneCount lane_count, const std::vector<std::uint8_t>& alive, std::size_t e0,
+                       Index& inverted) {
+  const std::size_t n = lane_count;
+  for (std::size_t l = 0; l < n; ++l) {
+    const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
+    if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
+    b.ok[l] = good ? 1.0 : 0.0;
+    b.V[l] = good ? b.V[l] : 1.0;  // masked lanes: finite values only
+    b.amax2[l] = good ? b.amax2[l] : 1.0;
+  }
+}
+
+// Mid-step coordinates x^{n-1/2} = x^n - dt/2 mv v^{n-1/2} into (fx, fy, fz) (mv = 0: a
+// switched element's frozen shape).
+template <int NPE, class Lanes, class LaneCount>
+inline void mid_step_coordinates(Lanes& b, LaneCount lane_count, double hdt) {
+  const std::size_t n = lane_count;
+  for (int i = 0; i < NPE; ++i)
+    for (std::size_t l = 0; l < n; ++l) {
+      b.fx[i][l] = b.x[i][l] - hdt * b.mv[l] * b.vx[i][l];
+      b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
+      b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
+    }
+}
+
+// The mid-step gradient (mx, my, mz) and volume Vm where that volume is positive, else the
+// current ones; `have_mid` false: the current ones (first cycle).
+template <int NPE, class Lanes, class LaneCount>
+inline void settle_mid_step_gradient(Lanes& b, LaneCount lane_count, bool have_mid) {
+  const std::size_t n = lane_count;
+  if (have_mid) {
+    for (int i = 0; i < NPE; ++i)
+      for (std::size_t l = 0; l < n; ++l) {
+        const bool mid = b.Vm[l] > 0.0;
+        b.mx[i][l] = mid ? b.mx[i][l] : b.bx[i][l];
+        b.my[i][l] = mid ? b.my[i][l] : b.by[i][l];
+        b.mz[i][l] = mid ? b.mz[i][l] : b.bz[i][l];
+      }
+    for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
+  } else {
+    for (int i = 0; i < NPE; ++i) {
+      brick::copy_lanes(n, b.bx[i], b.mx[i]);
+      brick::copy_lanes(n, b.by[i], b.my[i]);
+      brick::copy_lanes(n, b.bz[i], b.mz[i]);
+    }
+    brick::copy_lanes(n, b.V, b.Vm);
+  }
+}
+
 // Physical hourglass (Isolid 24) over the lanes: corotational frame R from the centre
 // Jacobian columns g_j = sum_I xi_jI x_I / 8 (Gram-Schmidt), increment dQ of the box
 // closed form (physical_hourglass) in that frame, Q kept in the global frame and turned
@@ -363,40 +416,14 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
   brick::copy_lanes(n, q_bulk.data() + e0, b.q_old);
 
   tetra_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
-  for (std::size_t l = 0; l < n; ++l) {
-    const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
-    if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
-    b.ok[l] = good ? 1.0 : 0.0;
-    b.V[l] = good ? b.V[l] : 1.0;  // masked lanes: finite values only
-    b.amax2[l] = good ? b.amax2[l] : 1.0;
-  }
+  mask_lanes(b, lane_count, alive, e0, inverted);
   // Velocity gradient on the mid-step configuration x - dt/2 v (current one if its volume
   // is not positive, and for a switched tetra, whose shape is frozen).
   if (dt > 0.0) {
-    const double hdt = 0.5 * dt;
-    for (int i = 0; i < 4; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        b.fx[i][l] = b.x[i][l] - hdt * b.mv[l] * b.vx[i][l];
-        b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
-        b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
-      }
+    mid_step_coordinates<4>(b, lane_count, 0.5 * dt);
     tetra_gradient_lanes(lane_count, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.am2);
-    for (int i = 0; i < 4; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        const bool mid = b.Vm[l] > 0.0;
-        b.mx[i][l] = mid ? b.mx[i][l] : b.bx[i][l];
-        b.my[i][l] = mid ? b.my[i][l] : b.by[i][l];
-        b.mz[i][l] = mid ? b.mz[i][l] : b.bz[i][l];
-      }
-    for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
-  } else {
-    for (int i = 0; i < 4; ++i) {
-      brick::copy_lanes(n, b.bx[i], b.mx[i]);
-      brick::copy_lanes(n, b.by[i], b.my[i]);
-      brick::copy_lanes(n, b.bz[i], b.mz[i]);
-    }
-    brick::copy_lanes(n, b.V, b.Vm);
   }
+  settle_mid_step_gradient<4>(b, lane_count, dt > 0.0);
   for (std::size_t l = 0; l < n; ++l) {
     double L[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) {
@@ -761,43 +788,17 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   brick::copy_lanes(n, e_int.data() + e0, b.e_int);
 
   brick::volume_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
-  for (std::size_t l = 0; l < n; ++l) {
-    const bool good = alive[e0 + l] != 0 && b.V[l] > 0.0;
-    if (alive[e0 + l] != 0 && !(b.V[l] > 0.0) && inverted == kNoIndex) inverted = static_cast<Index>(e0 + l);
-    b.ok[l] = good ? 1.0 : 0.0;
-    b.V[l] = good ? b.V[l] : 1.0;  // masked lanes: finite values only
-    b.amax2[l] = good ? b.amax2[l] : 1.0;
-  }
+  mask_lanes(b, lane_count, alive, e0, inverted);
 
   // Velocity gradient L_ij = sum_I v_iI B_jI on the mid-step configuration
   // x^{n-1/2} = x^n - dt/2 v^{n-1/2} (second-order accurate strain increment; the stress
   // work then matches the trapezoidal work of the nodal forces). A lane whose mid-step
   // volume is not positive uses the current configuration.
   if (dt > 0.0) {
-    const double hdt = 0.5 * dt;
-    for (int i = 0; i < 8; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        b.fx[i][l] = b.x[i][l] - hdt * b.mv[l] * b.vx[i][l];
-        b.fy[i][l] = b.y[i][l] - hdt * b.mv[l] * b.vy[i][l];
-        b.fz[i][l] = b.z[i][l] - hdt * b.mv[l] * b.vz[i][l];
-      }
+    mid_step_coordinates<8>(b, lane_count, 0.5 * dt);
     brick::volume_gradient_lanes(lane_count, b.fx, b.fy, b.fz, b.mx, b.my, b.mz, b.Vm, b.amid2);
-    for (int i = 0; i < 8; ++i)
-      for (std::size_t l = 0; l < n; ++l) {
-        const bool mid = b.Vm[l] > 0.0;
-        b.mx[i][l] = mid ? b.mx[i][l] : b.bx[i][l];
-        b.my[i][l] = mid ? b.my[i][l] : b.by[i][l];
-        b.mz[i][l] = mid ? b.mz[i][l] : b.bz[i][l];
-      }
-    for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
-  } else {
-    for (int i = 0; i < 8; ++i) {
-      brick::copy_lanes(n, b.bx[i], b.mx[i]);
-      brick::copy_lanes(n, b.by[i], b.my[i]);
-      brick::copy_lanes(n, b.bz[i], b.mz[i]);
-    }
-    brick::copy_lanes(n, b.V, b.Vm);
   }
+  settle_mid_step_gradient<8>(b, lane_count, dt > 0.0);
   for (int k = 0; k < 9; ++k) std::fill_n(b.L[k], n, 0.0);
   for (int i = 0; i < 8; ++i)
     for (std::size_t l = 0; l < n; ++l) {
