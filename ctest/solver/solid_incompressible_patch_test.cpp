@@ -8,7 +8,7 @@
 //    assembled force of every interior node is zero;
 //  - uniform compression: p = -K ln(V/V0) in every element (hypoelastic bulk), interior
 //    nodes in equilibrium.
-#include "solid/brick_block.hpp"
+#include "solid_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,50 +21,19 @@ namespace {
 struct Patch {
   Model m;
   SolidGroup* g = nullptr;
-  std::vector<bool> interior;
 };
 
+// The body model's flesh on the distorted 30 mm block (solid_test_support.hpp), Isolid 24.
 void make_patch(Patch& p) {
-  BrickBlock b;
-  b.nx = b.ny = b.nz = 3;
-  b.lx = b.ly = b.lz = 30;
-  b.material.rho = 1.02e-6;
-  b.material.law = SolidLaw::Viscoelastic;
-  b.material.set_viscoelastic(0.12875, 5.15e-6, 1.5e-6, 0.1);  // flesh, beta 100 /s
+  BrickBlock b = testing::patch_block(testing::flesh());
   b.hourglass = HourglassForm::Physical;
-  // Distort the interior nodes before the block is built (volumes from these positions).
-  Model& m = p.m;
-  p.g = &make_brick_block(m, b);
-  p.interior.assign(m.nodes.n_nodes, false);
-  for (std::size_t i = 0; i < m.nodes.n_nodes; ++i) {
-    const double x = m.nodes.x.x[i], y = m.nodes.x.y[i], z = m.nodes.x.z[i];
-    const bool in = x > 1 && x < 29 && y > 1 && y < 29 && z > 1 && z < 29;
-    p.interior[i] = in;
-    if (in) {
-      m.nodes.x.x[i] += 2.0 * std::sin(0.3 * static_cast<double>(i));
-      m.nodes.x.y[i] += 1.5 * std::cos(0.7 * static_cast<double>(i));
-      m.nodes.x.z[i] -= 1.8 * std::sin(1.1 * static_cast<double>(i));
-    }
-  }
-  m.nodes.x0 = m.nodes.x;
+  p.g = &make_brick_block(p.m, b);
+  testing::distort_interior(p.m, b);  // volumes below from these positions
   p.g->icpre = 0;
-  ASSERT_EQ(p.g->initialize(m.nodes), kNoIndex);
+  ASSERT_EQ(p.g->initialize(p.m.nodes), kNoIndex);
 }
 
-double max_interior_force(const Patch& p) {
-  const SolidGroup& g = *p.g;
-  std::vector<double> fx(p.m.nodes.n_nodes, 0.0), fy = fx, fz = fx;
-  for (std::size_t sl = 0; sl < g.connectivity.size(); ++sl) {
-    const auto n = static_cast<std::size_t>(g.connectivity[sl]);
-    fx[n] += g.slot_force.x[sl];
-    fy[n] += g.slot_force.y[sl];
-    fz[n] += g.slot_force.z[sl];
-  }
-  double f = 0.0;
-  for (std::size_t i = 0; i < fx.size(); ++i)
-    if (p.interior[i]) f = std::max(f, std::sqrt(fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]));
-  return f;
-}
+double max_interior_force(const Patch& p) { return testing::max_interior_force(p.m, *p.g); }
 
 TEST(SolidIncompressiblePatch, ShearFollowsLaw34WithoutHourglass) {
   Patch p;
