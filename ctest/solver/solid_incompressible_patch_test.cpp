@@ -41,21 +41,8 @@ TEST(SolidIncompressiblePatch, ShearFollowsLaw34WithoutHourglass) {
   const double gdot = 1e-3, dt = 1e-3;  // engineering shear rate [1/ms]: 0.01 shear at 10 ms
   const int n = 10000;
   // v = gdot (z - 15) e_x: z does not change, so the field stays the same linear field.
-  NodalState& s = p.m.nodes;
-  StepContext step;
-  GroupStepResult res;
-  for (int k = 0; k <= n; ++k) {
-    for (std::size_t i = 0; i < s.n_nodes; ++i) {
-      s.v.x[i] = gdot * (s.x.z[i] - 15.0);
-      s.v.y[i] = s.v.z[i] = 0.0;
-    }
-    if (k > 0) {
-      for (std::size_t i = 0; i < s.n_nodes; ++i) s.x.x[i] += dt * s.v.x[i];
-      step.dt_prev = dt;
-      step.time += dt;
-    }
-    p.g->compute_forces(step, s, res);
-  }
+  const double A[3][3] = {{0, 0, gdot}, {0, 0, 0}, {0, 0, 0}};
+  testing::drive_linear(p.m, *p.g, A, dt, n);
   const SolidMaterial& mat = p.g->material;
   const double t = n * dt, beta = mat.beta;
   const double expect = mat.Ginf * gdot * t + (mat.G0 - mat.Ginf) * gdot * (1.0 - std::exp(-beta * t)) / beta;
@@ -77,24 +64,8 @@ TEST(SolidIncompressiblePatch, CompressionGivesBulkPressureOnly) {
   const double edot = 1e-3, dt = 1e-3;  // volumetric rate 3 edot
   const int n = 1000;
   p.g->qa = p.g->qb = 0.0;  // bulk viscosity differs per element: leave it out here
-  NodalState& s = p.m.nodes;
-  StepContext step;
-  GroupStepResult res;
-  for (int k = 1; k <= n; ++k) {
-    for (std::size_t i = 0; i < s.n_nodes; ++i) {
-      s.v.x[i] = -edot * (s.x.x[i] - 15.0);
-      s.v.y[i] = -edot * (s.x.y[i] - 15.0);
-      s.v.z[i] = -edot * (s.x.z[i] - 15.0);
-    }
-    for (std::size_t i = 0; i < s.n_nodes; ++i) {
-      s.x.x[i] += dt * s.v.x[i];
-      s.x.y[i] += dt * s.v.y[i];
-      s.x.z[i] += dt * s.v.z[i];
-    }
-    step.dt_prev = dt;
-    step.time += dt;
-    p.g->compute_forces(step, s, res);
-  }
+  const double A[3][3] = {{-edot, 0, 0}, {0, -edot, 0}, {0, 0, -edot}};
+  testing::drive_linear(p.m, *p.g, A, dt, n);
   // Volume ratio of every element: (1 - edot dt)^(3n).
   const double lnJ = 3.0 * n * std::log(1.0 - edot * dt);
   const double p_expect = -p.g->material.K * lnJ;
