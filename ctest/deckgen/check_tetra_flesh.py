@@ -8,7 +8,8 @@ nodal pressure tetras, under the first 3 ms of the 6.7 m/s frontal hub impact.
   - the tetras hold the bricks' mass (the six tetras of a brick with plane faces fill it
     exactly; the torso's warped faces leave less than 0.5 %);
   - the run terminates normally with energy error below 0.1 %, the tetras store internal
-    energy (they carry the load) and no hourglass energy (a tetra has no hourglass mode).
+    energy (they carry the load) and no hourglass energy (a tetra has no hourglass mode);
+  - a malformed brick line is an error naming the file and line, exit 1, no output written.
 
   check_tetra_flesh.py SOLVER_EXE TOOL MODEL_INC CASE_DIR WORK_DIR
 """
@@ -55,6 +56,17 @@ def main():
             if r.returncode != 0 or not m or int(m.group(2)) != 6 * int(m.group(1)) or int(m.group(1)) == 0:
                 print("tetra_flesh.py did not cut the thoracic flesh")
                 return 1
+    # Bad input: the first flesh_thorax brick line cut short.
+    lines = open(model).read().split("\n")
+    k = lines.index("/BRICK/1") + 1
+    lines[k] = lines[k][:35]
+    bad = os.path.join(work, "bad.inc")
+    open(bad, "w").write("\n".join(lines))
+    bad_out = os.path.join(work, "bad_out.inc")
+    r = subprocess.run([sys.executable, tool, bad, bad_out], capture_output=True, text=True)
+    print(r.stderr.strip())
+    if r.returncode != 1 or f"bad.inc:{k + 1}:" not in r.stderr or os.path.exists(bad_out):
+        errors.append(f"a short brick line is not an error naming bad.inc:{k + 1} with exit 1 and no output")
     deck = glob.glob(os.path.join(work, "bricks", "case", "*_0000.rad"))[0]
     _, brick_listing = run(exe, deck, os.path.join(work, "bricks", "out"), 0.003)
     deck = glob.glob(os.path.join(work, "tetras", "case", "*_0000.rad"))[0]
