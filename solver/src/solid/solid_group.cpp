@@ -380,7 +380,6 @@ template <class LaneCount>
 void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const StepContext& step,
                                      const NodalState& nodes, double& e_int_inc, double& dt_min, Index& dt_elem,
                                      Index& inverted) {
-  constexpr std::size_t W = TetraLanes::W;
   const std::size_t n = lane_count;
   static thread_local TetraLanes lanes;
   TetraLanes& b = lanes;
@@ -437,39 +436,28 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     b.d[3][l] = 0.5 * (L[1] + L[3]); b.d[4][l] = 0.5 * (L[5] + L[7]); b.d[5][l] = 0.5 * (L[6] + L[2]);
     b.w[0][l] = 0.5 * (L[1] - L[3]); b.w[1][l] = 0.5 * (L[5] - L[7]); b.w[2][l] = 0.5 * (L[6] - L[2]);
   }
-  // Stress update (LAW1, LAW34 as in the brick lanes: Jaumann rotation, deviatoric and
-  // volumetric parts, the hereditary deviator with the step's constants hoisted), with the
-  // old total stress power first for the trapezoidal internal energy.
-  const double x = mat.beta * dt;
-  const double decay = visco ? std::exp(-x) : 0.0;
-  const double gain = visco ? ((x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x) : 0.0;
-  const double two_g = 2.0 * (visco ? mat.Ginf : mat.G);
-  const double two_gh = visco ? 2.0 * (mat.G0 - mat.Ginf) * gain : 0.0;
+  // Stress update (LAW1, LAW34: HypoelasticStep as the brick lanes), with the old total stress
+  // power first for the trapezoidal internal energy.
+  const HypoelasticStep law(mat, dt);
   const double K = mat.K;
   const bool update = dt > 0.0;
   for (std::size_t l = 0; l < n; ++l) {
     const double s[6] = {b.sig[0][l], b.sig[1][l], b.sig[2][l], b.sig[3][l], b.sig[4][l], b.sig[5][l]};
     const double h[6] = {b.hist[0][l], b.hist[1][l], b.hist[2][l], b.hist[3][l], b.hist[4][l], b.hist[5][l]};
-    const double d0 = b.d[0][l], d1 = b.d[1][l], d2 = b.d[2][l], d3 = b.d[3][l], d4 = b.d[4][l], d5 = b.d[5][l];
-    b.de[l] = (s[0] + h[0]) * d0 + (s[1] + h[1]) * d1 + (s[2] + h[2]) * d2 +
-              2.0 * ((s[3] + h[3]) * d3 + (s[4] + h[4]) * d4 + (s[5] + h[5]) * d5);
+    const double d[6] = {b.d[0][l], b.d[1][l], b.d[2][l], b.d[3][l], b.d[4][l], b.d[5][l]};
+    b.de[l] = (s[0] + h[0]) * d[0] + (s[1] + h[1]) * d[1] + (s[2] + h[2]) * d[2] +
+              2.0 * ((s[3] + h[3]) * d[3] + (s[4] + h[4]) * d[4] + (s[5] + h[5]) * d[5]);
     if (!update) {
       for (int k = 0; k < 6; ++k) b.s_new[k][l] = s[k] + h[k];
       continue;
     }
-    double rot[6], hrot[6];
-    jaumann_increment(s, b.w[0][l], b.w[1][l], b.w[2][l], dt, rot);
-    jaumann_increment(h, b.w[0][l], b.w[1][l], b.w[2][l], dt, hrot);
-    const double dv = (d0 + d1 + d2) * dt;
-    const double dev[6] = {d0 * dt - dv / 3.0, d1 * dt - dv / 3.0, d2 * dt - dv / 3.0, d3 * dt, d4 * dt, d5 * dt};
-    const double kdv = K * dv * b.vol_free[l];
     const double shift = b.shift_on[l] * (K * b.mlj[l] - (s[0] + s[1] + s[2]) / 3.0);
+    double sn[6], hn[6];
+    law.apply(s, h, d, b.w[0][l], b.w[1][l], b.w[2][l], b.vol_free[l], shift, sn, hn);
     for (int k = 0; k < 6; ++k) {
-      const double sn = s[k] + rot[k] + two_g * dev[k] + (k < 3 ? kdv + shift : 0.0);
-      const double hn = visco ? decay * (h[k] + hrot[k]) + two_gh * dev[k] : 0.0;
-      b.sig[k][l] = sn;
-      b.hist[k][l] = hn;
-      b.s_new[k][l] = sn + hn;
+      b.sig[k][l] = sn[k];
+      b.hist[k][l] = hn[k];
+      b.s_new[k][l] = sn[k] + hn[k];
     }
   }
   // Bulk viscosity, internal energy, forces, critical step (see compute_tetra_scalar).
@@ -542,7 +530,6 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
   e_int_inc = sum_int;
   dt_min = step_min;
   dt_elem = step_elem;
-  (void)W;
 }
 
 // Tetras e_begin .. e_end-1 element by element (all laws; the plastic ones use it).
@@ -828,31 +815,18 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
     for (int k = 0; k < 6; ++k)
       for (std::size_t l = 0; l < n; ++l) b.s_new[k][l] = b.sig[k][l] + b.hist[k][l];
   } else if (mat.law == SolidLaw::Elastic || visco) {
-    // LAW1 and LAW34 over the lanes: Jaumann rotation, deviatoric and volumetric parts;
-    // LAW34 hereditary deviator h^{n+1} = exp(-beta dt)(h + dt(Wh - hW)) + 2(G0 - Ginf)
-    // (1 - exp(-beta dt))/(beta dt) de (constants of the step hoisted).
-    const double x = mat.beta * dt;
-    const double decay = visco ? std::exp(-x) : 0.0;
-    const double gain = visco ? ((x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x) : 0.0;
-    const double two_g = 2.0 * (visco ? mat.Ginf : mat.G);
-    const double two_gh = visco ? 2.0 * (mat.G0 - mat.Ginf) * gain : 0.0;
-    const double K = mat.K;
+    // LAW1 and LAW34 over the lanes (HypoelasticStep, solid_material.hpp).
+    const HypoelasticStep law(mat, dt);
     for (std::size_t l = 0; l < n; ++l) {
       const double s[6] = {b.sig[0][l], b.sig[1][l], b.sig[2][l], b.sig[3][l], b.sig[4][l], b.sig[5][l]};
       const double h[6] = {b.hist[0][l], b.hist[1][l], b.hist[2][l], b.hist[3][l], b.hist[4][l], b.hist[5][l]};
-      const double wxy = b.w[0][l], wyz = b.w[1][l], wzx = b.w[2][l];
-      double rot[6], hrot[6];
-      jaumann_increment(s, wxy, wyz, wzx, dt, rot);
-      jaumann_increment(h, wxy, wyz, wzx, dt, hrot);
-      const double dv = (b.d[0][l] + b.d[1][l] + b.d[2][l]) * dt;
-      const double dev[6] = {b.d[0][l] * dt - dv / 3.0, b.d[1][l] * dt - dv / 3.0, b.d[2][l] * dt - dv / 3.0,
-                             b.d[3][l] * dt, b.d[4][l] * dt, b.d[5][l] * dt};
+      const double d[6] = {b.d[0][l], b.d[1][l], b.d[2][l], b.d[3][l], b.d[4][l], b.d[5][l]};
+      double sn[6], hn[6];
+      law.apply(s, h, d, b.w[0][l], b.w[1][l], b.w[2][l], 1.0, 0.0, sn, hn);
       for (int k = 0; k < 6; ++k) {
-        const double sn = s[k] + rot[k] + two_g * dev[k] + (k < 3 ? K * dv : 0.0);
-        const double hn = decay * (h[k] + hrot[k]) + two_gh * dev[k];
-        b.sig[k][l] = sn;
-        b.hist[k][l] = hn;
-        b.s_new[k][l] = sn + hn;
+        b.sig[k][l] = sn[k];
+        b.hist[k][l] = hn[k];
+        b.s_new[k][l] = sn[k] + hn[k];
       }
     }
   } else {

@@ -73,6 +73,40 @@ struct SolidPointState {
   double* eps_p;     // equivalent plastic strain (LAW2/36), else nullptr
 };
 
+// One step of the LAW1 / LAW34 hypoelastic update at a point as the lane kernels do it, the
+// step's constants hoisted out of the element loop: sigma gets its Jaumann rotation,
+// 2 G' dev(D) dt and, times `vol`, the volumetric K tr(D) dt, plus `shift` on the diagonal
+// (vol 0, shift K ln J - p: the tetras' nodal pressure); the LAW34 hereditary deviator
+// h^{n+1} = exp(-beta dt)(h + dt(Wh - hW)) + 2 (G0 - Ginf) (1 - exp(-beta dt))/(beta dt) dev(D) dt.
+// G' = Ginf for LAW34, G for LAW1 (h stays 0).
+struct HypoelasticStep {
+  double dt = 0, decay = 0, two_g = 0, two_gh = 0, K = 0;
+
+  HypoelasticStep(const SolidMaterial& m, double dt_) : dt(dt_), K(m.K) {
+    const bool visco = m.viscoelastic();
+    const double x = m.beta * dt;
+    decay = visco ? std::exp(-x) : 0.0;
+    const double gain = visco ? ((x > 1e-8) ? (1.0 - decay) / x : 1.0 - 0.5 * x) : 0.0;
+    two_g = 2.0 * (visco ? m.Ginf : m.G);
+    two_gh = visco ? 2.0 * (m.G0 - m.Ginf) * gain : 0.0;
+  }
+
+  void apply(const double s[6], const double h[6], const double d[6], double wxy, double wyz, double wzx, double vol,
+             double shift, double s_out[6], double h_out[6]) const {
+    double rot[6], hrot[6];
+    jaumann_increment(s, wxy, wyz, wzx, dt, rot);
+    jaumann_increment(h, wxy, wyz, wzx, dt, hrot);
+    const double dv = (d[0] + d[1] + d[2]) * dt;
+    const double dev[6] = {d[0] * dt - dv / 3.0, d[1] * dt - dv / 3.0, d[2] * dt - dv / 3.0,
+                           d[3] * dt, d[4] * dt, d[5] * dt};
+    const double dvol = dv * vol;
+    for (int k = 0; k < 6; ++k) {
+      s_out[k] = s[k] + rot[k] + two_g * dev[k] + (k < 3 ? K * dvol : 0.0) + (k < 3 ? shift : 0.0);
+      h_out[k] = decay * (h[k] + hrot[k]) + two_gh * dev[k];
+    }
+  }
+};
+
 // Advance the stress over dt with rate of deformation d (Voigt, engineering-free:
 // d[3] = D_xy etc.) and spin (wxy, wyz, wzx). Writes the total stress to `out`.
 // Returns the plastic strain increment.
