@@ -44,6 +44,10 @@ for t in hbm-loadcase hbm-solver hbm-corridors; do
   [[ -x $bin/$t ]] || { echo "validate.sh: $bin/$t not built (cmake --build $build --target $t)" >&2; exit 2; }
 done
 [[ -f $model ]] || { echo "validate.sh: no body model $model (generate it with hbm-deckgen)" >&2; exit 1; }
+if [[ -n $deck_hook ]]; then
+  [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
+  [[ -f $deck_hook ]] || { echo "validate.sh: --deck-hook $deck_hook: no such file" >&2; exit 2; }
+fi
 [[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
 mkdir -p "$work/runs" "$work/reports"
 if [[ -n $tstop ]]; then decks=$work/decks; else decks=decks; fi
@@ -56,7 +60,6 @@ for c in $cases; do
 done
 
 if [[ -n $deck_hook ]]; then
-  [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
   for c in $cases; do bash "$deck_hook" "$decks/$c/${c}_0000.rad"; done
 fi
 

@@ -405,6 +405,7 @@ TEST(ContactPenalty, InactiSixStartsPenetratedNodesWithoutForce) {
 // entering node at once.
 TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
   const double kp = 100, g = 0.5, kmax = 100 * kp;
+  std::size_t entries = 0;
   auto run = [&](int inacti, const std::vector<std::array<double, 2>>& xz, std::vector<double>& fz,
                  std::vector<double>& u) {
     NodalState n;
@@ -423,11 +424,13 @@ TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
       fz.push_back(n.force.z[node]);
       u.push_back(c.elastic_energy());
     }
+    entries = c.n_entry_caps();
   };
   const std::vector<std::array<double, 2>> slide = {{2.0, 0.1}, {1.02, 0.1}, {0.9, 0.1}, {0.9, 0.085}};
   std::vector<double> f6, u6, f0, u0;
   run(6, slide, f6, u6);
   EXPECT_EQ(f6[0], 0.0);
+  EXPECT_EQ(entries, 1u) << "one entry treated as initial penetration";
   EXPECT_EQ(f6[1], 0.0) << "entry past the edge: no force";
   EXPECT_EQ(u6[1], 0.0) << "entry past the edge: no potential";
   EXPECT_EQ(f6[2], 0.0);
@@ -463,6 +466,7 @@ TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
   const std::vector<std::array<double, 2>> approach = {{0.0, 0.6}, {0.0, 0.52}, {0.0, 0.44}, {0.0, 0.36}};
   std::vector<double> fa, ua;
   run(6, approach, fa, ua);
+  EXPECT_EQ(entries, 0u) << "an approach is not an entry";
   EXPECT_NEAR(fa[2], PenaltyContact::law_force(g - 0.44, g, kp, kmax, false), 1e-12);
   EXPECT_NEAR(fa[3], PenaltyContact::law_force(g - 0.36, g, kp, kmax, false), 1e-12);
 }

@@ -89,7 +89,10 @@ def convert(path, part_names):
     missing = [p for p in part_names if p not in part_id]
     if missing:
         raise DeckError(f"{path}: no /PART titled {', '.join(missing)}")
+    if not part_names:
+        raise DeckError("no part named to cut (--parts)")
     targets = {part_id[p] for p in part_names}
+    target_prop_lines = {part_prop_line[p] for p in targets}  # their /PART property lines
     prop_id = max(props | {0}) + 1
 
     # Cut the bricks; face cut per face (node set -> diagonal), checked for agreement.
@@ -154,10 +157,8 @@ def convert(path, part_names):
                 out.append('%10s%10d%10d%10d%10d' % ('', a, c, d, d))
                 n_split += 1
                 continue
-        if k in part_prop_line.values():
-            pid = next(p for p, li in part_prop_line.items() if li == k)
-            if pid in targets:
-                ln = '%10d%s' % (prop_id, ln[10:])
+        if k in target_prop_lines:
+            ln = '%10d%s' % (prop_id, ln[10:])
         out.append(ln)
     n_bricks = sum(len(v) for v in tets.values()) // 6
     return '\n'.join(out), n_bricks, n_split, prop_id
