@@ -45,7 +45,7 @@ class BrickHa8Group final : public ElementGroup {
   std::vector<double> q_bulk;   // bulk viscosity pressure of the last cycle [stress]
   // /DT/BRICK/CST (set before initialize, which sizes the frozen geometry).
   SmallStrainSwitch small_strain;
-  FrozenBrickGeometry frozen_geometry;
+  FrozenGeometry frozen_geometry;
   std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
   // Size the arrays (after n_elements / connectivity) and compute V0 and mass. Returns

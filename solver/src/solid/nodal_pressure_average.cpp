@@ -12,13 +12,21 @@ namespace hbm::solver {
 
 namespace {
 
-double tetra_volume(const NodalState& nodes, const Index* n) {
-  const auto a = static_cast<std::size_t>(n[0]), b = static_cast<std::size_t>(n[1]);
-  const auto c = static_cast<std::size_t>(n[2]), d = static_cast<std::size_t>(n[3]);
-  const double ax = nodes.x.x[b] - nodes.x.x[a], ay = nodes.x.y[b] - nodes.x.y[a], az = nodes.x.z[b] - nodes.x.z[a];
-  const double cx = nodes.x.x[c] - nodes.x.x[a], cy = nodes.x.y[c] - nodes.x.y[a], cz = nodes.x.z[c] - nodes.x.z[a];
-  const double dx = nodes.x.x[d] - nodes.x.x[a], dy = nodes.x.y[d] - nodes.x.y[a], dz = nodes.x.z[d] - nodes.x.z[a];
+// (b - a) . ((c - a) x (d - a)) / 6 of four points given by their coordinates.
+double tetra_volume(const double* a, const double* b, const double* c, const double* d) {
+  const double ax = b[0] - a[0], ay = b[1] - a[1], az = b[2] - a[2];
+  const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+  const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
   return (ax * (cy * dz - cz * dy) + ay * (cz * dx - cx * dz) + az * (cx * dy - cy * dx)) / 6.0;
+}
+
+double tetra_volume(const NodalState& nodes, const Index* n) {
+  double p[4][3];
+  for (int i = 0; i < 4; ++i) {
+    const auto k = static_cast<std::size_t>(n[i]);
+    p[i][0] = nodes.x.x[k]; p[i][1] = nodes.x.y[k]; p[i][2] = nodes.x.z[k];
+  }
+  return tetra_volume(p[0], p[1], p[2], p[3]);
 }
 
 }  // namespace
@@ -40,12 +48,14 @@ void NodalPressureAverage::setup(const std::vector<Index>& connectivity, const s
 }
 
 void NodalPressureAverage::update(const NodalState& nodes, const std::vector<Index>& connectivity,
-                                  const std::vector<std::uint8_t>& alive, const std::vector<double>& small_volume) {
+                                  const std::vector<std::uint8_t>& alive, const FrozenGeometry& frozen) {
   std::fill(v_.begin(), v_.end(), 0.0);
   const std::size_t n = volume0_.size();
   for (std::size_t e = 0; e < n; ++e) {
-    const bool switched = !small_volume.empty() && small_volume[e] > 0.0;
-    const double ve = !alive[e] ? volume0_[e] : switched ? small_volume[e] : tetra_volume(nodes, &connectivity[e * 4]);
+    const double* xf = frozen.active() && frozen.frozen[e] ? &frozen.x[e * 12] : nullptr;
+    const double ve = !alive[e] ? volume0_[e]
+                      : xf      ? tetra_volume(xf, xf + 3, xf + 6, xf + 9)
+                                : tetra_volume(nodes, &connectivity[e * 4]);
     for (int i = 0; i < 4; ++i) v_[static_cast<std::size_t>(local_[e * 4 + i])] += 0.25 * ve;
   }
   for (std::size_t k = 0; k < v_.size(); ++k) {

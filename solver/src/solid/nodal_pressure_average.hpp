@@ -18,6 +18,7 @@
 #pragma once
 
 #include "hbm/solver/types.hpp"
+#include "solid/small_strain_switch.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -37,13 +38,12 @@ class NodalPressureAverage {
   // Current nodal volumes from the tetras of the group (alive or not: a deleted tetra keeps
   // its share frozen at V0, so it neither pulls nor pushes its nodes), then each tetra's
   // mean ln J_n into mean_log_j. A node whose volume is not positive (only around inverted
-  // tetras, which stop the run) counts ln J = 0. A tetra switched to small strain
-  // (small_volume[e] > 0, its volume at the switch; empty: none) keeps that share: from the
-  // switch on it neither pulls nor pushes its nodes' volumes and carries its own pressure
-  // (a flattened tetra's frozen gradients would turn small normal velocities into large
-  // volume changes).
+  // tetras, which stop the run) counts ln J = 0. A tetra switched to small strain counts the
+  // volume of its frozen shape (its volume at the switch): from the switch on it neither pulls
+  // nor pushes its nodes' volumes and carries its own pressure (a flattened tetra's frozen
+  // gradients would turn small normal velocities into large volume changes).
   void update(const NodalState& nodes, const std::vector<Index>& connectivity, const std::vector<std::uint8_t>& alive,
-              const std::vector<double>& small_volume);
+              const FrozenGeometry& frozen);
 
   double mean_log_j(std::size_t e) const { return mean_log_j_[e]; }
 

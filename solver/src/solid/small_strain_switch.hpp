@@ -34,7 +34,7 @@ struct SmallStrainSwitch {
 // Frozen geometry of the switched elements of one solid group: flag per element and the
 // n x 3 coordinates at the switch (n = 8 bricks, 4 tetras), [e * 3n + 3 * i + k] (node i,
 // component k).
-struct FrozenBrickGeometry {
+struct FrozenGeometry {
   std::vector<std::uint8_t> frozen;
   std::vector<double> x;
 

@@ -235,7 +235,6 @@ Index SolidGroup::initialize(const NodalState& nodes) {
   if (nodes_per_element == 8 && hourglass == HourglassForm::Physical)
     for (auto& a : hg_visc) a.assign(n, 0.0);
   if (small_strain.enabled) frozen_geometry.allocate(n, nodes_per_element);
-  small_strain_volume.assign(nodes_per_element == 4 && small_strain.enabled ? n : 0, 0.0);
   if (nodes_per_element != 4) nodal_pressure.enabled = false;
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
@@ -524,7 +523,6 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
         xf[3 * i] = b.x[i][l]; xf[3 * i + 1] = b.y[i][l]; xf[3 * i + 2] = b.z[i][l];
       }
       frozen_geometry.frozen[e] = 1;
-      small_strain_volume[e] = b.V[l];
     }
   }
   e_int_inc = sum_int;
@@ -698,7 +696,6 @@ void SolidGroup::compute_tetra_scalar(std::size_t e_begin, std::size_t e_end, co
         xf[3 * i] = x[i]; xf[3 * i + 1] = y[i]; xf[3 * i + 2] = z[i];
       }
       frozen_geometry.frozen[e] = 1;
-      small_strain_volume[e] = V;
     }
     const double k_slot = 2.0 * (mass[e] / NPE) / (dte * dte);
     for (int i = 0; i < NPE; ++i) {
@@ -1104,7 +1101,7 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
   ChunkSums stack_sums[kStackChunks];
   std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
   ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
-  if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive, small_strain_volume);
+  if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive, frozen_geometry);
   if (nch == 1) {
     ChunkSums& c = sums[0];
     if (nodes_per_element == 8)

@@ -63,8 +63,7 @@ class SolidGroup final : public ElementGroup {
   // /TETRA4 with Itetra4 3: pressure from the averaged nodal volumes (set nodal_pressure.enabled
   // before initialize).
   NodalPressureAverage nodal_pressure;
-  FrozenBrickGeometry frozen_geometry;
-  std::vector<double> small_strain_volume;  // switched tetras: volume at the switch (nodal pressure share)
+  FrozenGeometry frozen_geometry;
   std::size_t n_small_strain() const override { return frozen_geometry.count(); }
 
   // Size all arrays after n_elements / nodes_per_element / connectivity are set, and
