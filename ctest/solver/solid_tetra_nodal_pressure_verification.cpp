@@ -110,6 +110,34 @@ TEST(SolidTetraNodalPressurePatch, FleshShearFollowsLaw34WithoutPressure) {
   EXPECT_LT(max_interior_force(m, g), 1e-4 * expect * 100.0);
 }
 
+// The plastic laws run element by element (compute_tetra_scalar) with the same nodal
+// pressure: a perfectly plastic LAW2 block (yield 1 MPa) compressed while sheared keeps the
+// mean stress K ln J in every tetra (J2 plasticity does not touch it) and its von Mises
+// stress at the yield stress once it flows.
+TEST(SolidTetraNodalPressurePatch, PlasticBlockKeepsNodalPressureOnTheYieldSurface) {
+  SolidMaterial mat;
+  mat.rho = 7.8e-6;
+  mat.law = SolidLaw::JohnsonCook;
+  mat.set_elastic(210.0, 0.3);
+  mat.plasticity.kind = PlasticityLaw::Kind::JohnsonCook;
+  mat.plasticity.jc.a = 1e-3;  // 1 MPa, no hardening
+  mat.plasticity.jc.b = 0.0;
+  Model m;
+  SolidGroup& g = make_tetra_block(m, patch_block(mat), true, true);
+  g.qa = g.qb = 0.0;
+  const double edot = 1e-4, gdot = 2e-4, dt = 1e-3;
+  const int n = 200;
+  const double A[3][3] = {{-edot, 0, gdot}, {0, -edot, 0}, {0, 0, -edot}};
+  drive_linear(m, g, A, dt, n);
+  const double lnJ = 3.0 * n * std::log(1.0 - edot * dt);  // det(I + dt A) = (1 - edot dt)^3
+  for (std::size_t e = 0; e < g.n_elements; ++e) {
+    double s[6];
+    g.stress(e, s);
+    EXPECT_NEAR((s[0] + s[1] + s[2]) / 3.0, mat.K * lnJ, 1e-6 * std::abs(mat.K * lnJ)) << "element " << e;
+    EXPECT_NEAR(von_mises(s), 1e-3, 1e-9) << "element " << e;
+  }
+}
+
 // Cantilever 80 x 10 x 10 of nx x 1 x nz bricks of six tetras (solid_test_support.hpp).
 BendingResult cantilever(double nu, bool nodal_pressure, int nx, int nz, bool plane_strain) {
   Model m;
