@@ -16,7 +16,7 @@
 # table is written in any case; the exit status is 0 only if every run terminated
 # normally and every rating was written, 1 otherwise, 2 on bad usage. --deck-hook SCRIPT:
 # `bash SCRIPT CASE_0000.rad` runs on every generated case deck before the runs (a model
-# variant: deckgen/scripts/tetra_flesh_hook.sh); with --tstop only, so that the committed
+# variant that rewrites the model the deck includes); with --tstop only, so that the committed
 # decks are not touched.
 set -euo pipefail
 cd "$(dirname "$0")/.."

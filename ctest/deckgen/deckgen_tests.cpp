@@ -253,15 +253,22 @@ TEST(Model, GreaterTrochanterLiesUnderDeformableSoftTissue) {
   std::vector<bool> rigid(b.m.nodes.size(), false);
   for (const auto& r : b.m.rigid_bodies)
     for (int n : r.nodes) rigid[static_cast<std::size_t>(n)] = true;
+  // The skin over the hips (its quads and the triangles of its warped faces): the tissue
+  // thickness over the trochanter is the distance from the landmark to it.
   std::set<int> skin;
+  std::vector<std::array<int, 4>> skin_faces;
   for (std::size_t e = 0; e < b.m.shells.size(); ++e)
-    if (b.m.parts[static_cast<std::size_t>(b.m.shell_part[e])].name.rfind("skin_pelvis", 0) == 0) skin.insert(b.m.shells[e].begin(), b.m.shells[e].end());
-  std::vector<std::array<int, 8>> torso;
-  for (std::size_t e = 0; e < b.m.bricks.size(); ++e) {
-    const std::string& seg = b.m.parts[static_cast<std::size_t>(b.m.brick_part[e])].segment;
-    if (seg == "thorax" || seg == "abdomen" || seg == "pelvis") torso.push_back(b.m.bricks[e]);
-  }
-  TriSurface surface = triangulate(b.m.nodes, hex_boundary_faces(torso));
+    if (b.m.parts[static_cast<std::size_t>(b.m.shell_part[e])].name.rfind("skin_pelvis", 0) == 0) {
+      skin.insert(b.m.shells[e].begin(), b.m.shells[e].end());
+      skin_faces.push_back(b.m.shells[e]);
+    }
+  for (std::size_t e = 0; e < b.m.trias.size(); ++e)
+    if (b.m.parts[static_cast<std::size_t>(b.m.tria_part[e])].name.rfind("skin_pelvis", 0) == 0) {
+      const auto& t = b.m.trias[e];
+      skin.insert(t.begin(), t.end());
+      skin_faces.push_back({t[0], t[1], t[2], t[2]});
+    }
+  TriSurface surface = triangulate(b.m.nodes, skin_faces);
   for (const char* side : {"r", "l"}) {
     const Eigen::Vector3d gt = b.g.pelvis.at(std::string("greater_trochanter_") + side);
     int outermost = -1;

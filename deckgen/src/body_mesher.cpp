@@ -47,6 +47,11 @@ EquivalentPlate sandwich_plate(double total, double cortical) {
 
 namespace {
 
+// mm: the greater trochanter and femoral neck medial of its landmark (the lateral bony
+// surface), est; torso nodes within it join the femur rigid body.
+constexpr double kTrochanterBone = 30.0;
+
+
 constexpr double kDensity = 1e-9;  // kg/m^3 -> kg/mm^3
 constexpr double kModulus = 1e-3;  // MPa -> GPa
 constexpr double kRate = 1e-3;     // 1/s -> 1/ms
@@ -118,6 +123,20 @@ class Builder {
     p.thickness = thickness;
     return m_.add_part(p);
   }
+  // Flags of the nodes that some element uses.
+  std::vector<char> element_nodes() const {
+    std::vector<char> in(m_.nodes.size(), 0);
+    auto mark = [&](const auto& els) {
+      for (const auto& e : els)
+        for (int n : e) in[static_cast<std::size_t>(n)] = 1;
+    };
+    mark(m_.bricks);
+    mark(m_.tetras);
+    mark(m_.shells);
+    mark(m_.trias);
+    mark(m_.springs);
+    return in;
+  }
   void brick(int part_index, const std::array<int, 8>& h) {
     m_.bricks.push_back(h);
     m_.brick_part.push_back(part_index);
@@ -129,7 +148,8 @@ class Builder {
   }
   // A skin quad whose two triangulations differ by more than 15 deg (warpage) is split
   // into two triangles along its shorter diagonal (part `tri_part`).
-  void skin_quad(int quad_part, int tri_part, const std::array<int, 4>& q) {
+  // Returns the shells made, triangles as quads with n4 = n3.
+  std::vector<std::array<int, 4>> skin_quad(int quad_part, int tri_part, const std::array<int, 4>& q) {
     auto P = [&](int i) { return m_.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
     auto ang = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
       return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
@@ -138,15 +158,13 @@ class Builder {
                         ang((P(2) - P(1)).cross(P(3) - P(1)), (P(3) - P(1)).cross(P(0) - P(1))));
     if (w <= 15) {
       shell(quad_part, q);
-      return;
+      return {q};
     }
-    if ((P(2) - P(0)).norm() <= (P(3) - P(1)).norm()) {
-      tria(tri_part, {q[0], q[1], q[2]}, 0);
-      tria(tri_part, {q[0], q[2], q[3]}, 0);
-    } else {
-      tria(tri_part, {q[0], q[1], q[3]}, 0);
-      tria(tri_part, {q[1], q[2], q[3]}, 0);
-    }
+    std::array<int, 3> a{q[0], q[1], q[3]}, b{q[1], q[2], q[3]};
+    if ((P(2) - P(0)).norm() <= (P(3) - P(1)).norm()) a = {q[0], q[1], q[2]}, b = {q[0], q[2], q[3]};
+    tria(tri_part, a, 0);
+    tria(tri_part, b, 0);
+    return {{a[0], a[1], a[2], a[2]}, {b[0], b[1], b[2], b[2]}};
   }
   void tria(int part_index, const std::array<int, 3>& t, double th) {
     m_.trias.push_back(t);
@@ -208,6 +226,9 @@ class Builder {
   Eigen::Vector3d moved(const std::string& link, const Eigen::Vector3d& p) const { return g_.skeleton.motion(link) * p; }
 
   void build_torso();
+  bool is_tetra_flesh_cell(int r, int j) const;
+  void build_tetra_flesh(const std::map<std::string, int>& flesh, const std::map<std::string, int>& skin,
+                         const std::map<std::string, int>& skin_tri);
   void calibrate_disc(int layer, int part_index, double k_n_per_mm);
   void build_neck();
   void build_ribcage();
@@ -232,7 +253,9 @@ class Builder {
   std::vector<LayerInfo> torso_layers_, neck_layers_;
   int neck_top_level_ = 0;
   std::vector<std::array<int, 4>> torso_skin_, neck_skin_;
-  std::vector<std::array<int, 8>> torso_hexes_;
+  std::vector<std::array<int, 8>> torso_hexes_;   // the fine grid's cells (also where flesh is tetras)
+  std::vector<std::array<int, 4>> torso_top_faces_;  // top faces of the torso's solid cells (neck base tie)
+  std::vector<std::pair<int, int>> tetra_flesh_rows_;  // flesh_tetra: bottom and top level of each cell row
   std::vector<std::array<int, 4>> cage_segments_;  // triangles as quads with n4 = n3
   std::set<int> pelvis_shell_nodes_, sternum_nodes_;
   int cart_part = -1, cart_mat = -1;
@@ -367,26 +390,32 @@ void Builder::build_torso() {
       column = part("disc_" + L.vertebra, ElementKind::Brick, mi, L.region, "spine");
     } else
       column = flesh.at(L.region);
+    const bool top = l + 2 == torso_->levels();
     for (int a = 0; a < m; ++a)
       for (int b = 0; b < m; ++b) {
         auto h = torso_->block_cell(l, a, b);
         brick(organ_part(L), h);
         torso_hexes_.push_back(h);
+        if (top) torso_top_faces_.push_back({h[4], h[5], h[6], h[7]});
       }
     for (int r = 0; r < 3; ++r)
       for (int j = 0; j < N; ++j) {
         auto h = torso_->ring_cell(l, r, j);
+        torso_hexes_.push_back(h);  // the fine grid's volume: inside tests of the contacts and limbs
+        if (o_.flesh_tetra && is_tetra_flesh_cell(r, j)) continue;  // meshed over the layer pairs below
         int p = torso_->is_column_cell(r, j) ? column : r == 0 ? organ_part(L) : flesh.at(L.region);
         brick(p, h);
-        torso_hexes_.push_back(h);
+        if (top) torso_top_faces_.push_back({h[4], h[5], h[6], h[7]});
       }
-    for (int j = 0; j < N; ++j) {
-      auto q = torso_->ring_face(l, 3, j);
-      skin_quad(skin.at(L.region), skin_tri.at(L.region), q);
-      torso_skin_.push_back(q);
-    }
+    if (!o_.flesh_tetra)
+      for (int j = 0; j < N; ++j) {
+        auto q = torso_->ring_face(l, 3, j);
+        skin_quad(skin.at(L.region), skin_tri.at(L.region), q);
+        torso_skin_.push_back(q);
+      }
     if (L.kind == LayerKind::Disc) calibrate_disc(l, column, g_.disc_stiffness.at(L.vertebra));
   }
+  if (o_.flesh_tetra) build_tetra_flesh(flesh, skin, skin_tri);
   // Thoracic inlet: the suprapleural membrane (Sibson's fascia) over the top faces of the
   // organ block and organ ring at the top level, from the rib cage wall to the spinal
   // column (geometry/materials.csv). Without it the organ block extrudes upward through
@@ -436,6 +465,93 @@ void Builder::build_torso() {
   for (int l = 0; l < torso_->levels(); ++l) lm_.trunk_centreline.push_back(centre(torso_->level(l).name));
   for (int l = 0; l < torso_->levels(); ++l)
     if (torso_->level(l).name == "L3_lower") lm_.points["omphalion"] = m_.nodes[static_cast<std::size_t>(torso_->ring_node(l, 3, 0))];
+}
+
+// Flesh as average nodal pressure tetras (MesherOptions::flesh_tetra). The bricks' two
+// flesh rings and their skin quads give way to one cell from the rib cage wall (ring 1) to
+// the skin (ring 3) over two layers, cut into the six tetras around its diagonal: a tetra
+// has no hourglass mode and the nodal pressure does not lock (docs/engine-design.md §12.9),
+// and the coarser cell keeps the element count of the brick layout (4 bricks + 2 skin quads
+// become 6 tetras + 1 quad). Layers are paired from the bottom of each region (pelvis,
+// abdomen, thorax), so every pair is a vertebral body with the disc above it; a region with
+// an odd count ends with a single layer. Behind the spinal column (cells j = N/2-1, N/2,
+// whose ring layers 0-1 are bone) a cell starts at ring 2, and so do the column-side edges
+// of the two cells beside it, which keeps the tetras conforming among themselves (a wedge
+// beside the column's flesh-facing side is left empty). The cells' inner faces rest on
+// every other ring-1 level: the wall nodes between (rib edges, organ ring corners) are not
+// tetra nodes (the wall is the stiffer side, its own elements carry them).
+bool Builder::is_tetra_flesh_cell(int r, int j) const {
+  // Flesh bricks of ring layers 1 and 2; the column cells of ring layer 1 stay bricks (bone,
+  // or in the buttock layers flesh under the coccyx that the tetra cells start above).
+  return r == 2 || (r == 1 && !torso_->is_column_cell(1, j));
+}
+
+void Builder::build_tetra_flesh(const std::map<std::string, int>& flesh, const std::map<std::string, int>& skin,
+                                const std::map<std::string, int>& skin_tri) {
+  const int N = torso_->n(), layers = torso_->levels() - 1;
+  std::vector<std::pair<int, int>> pairs;  // first and last layer of each cell row
+  for (int l = 0; l < layers;) {
+    const auto& region = torso_layers_[static_cast<std::size_t>(l)].region;
+    bool two = l + 1 < layers && torso_layers_[static_cast<std::size_t>(l + 1)].region == region;
+    pairs.push_back({l, two ? l + 1 : l});
+    l += two ? 2 : 1;
+  }
+  auto column_node = [&](int j) {
+    j = ((j % N) + N) % N;
+    return j >= N / 2 - 1 && j <= N / 2 + 1;
+  };
+  // The cells over the greater trochanters start at ring 2 where that ring's nodes are at the
+  // bone (build_pelvis puts them in the femur rigid body, as in the brick layout), so that
+  // the lateral hip's tissue lies between the skin and the trochanter, not the pelvic wall.
+  std::set<int> at_trochanter;
+  for (const char* side : {"greater_trochanter_r", "greater_trochanter_l"}) {
+    const Eigen::Vector3d gt = g_.pelvis.at(side);
+    for (const auto& [l0, l1] : pairs)
+      for (int lv : {l0, l1 + 1})
+        for (int j = 0; j < N; ++j) {
+          int n = torso_->ring_node(lv, 2, j);
+          const Eigen::Vector3d& x = m_.nodes[static_cast<std::size_t>(n)];
+          if ((x - gt).norm() <= kTrochanterBone && std::abs(x.y()) <= std::abs(gt.y())) at_trochanter.insert(n);
+        }
+  }
+  // Kuhn's six tetras around the diagonal n1-n7: every face of the cell is cut along its
+  // diagonal through n1 or n7, so cells ordered alike share their cuts.
+  static constexpr int kKuhn[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+  auto X = [&](int n) { return m_.nodes[static_cast<std::size_t>(n)]; };
+  for (const auto& [l0, l1] : pairs) {
+    const LayerInfo& L = torso_layers_[static_cast<std::size_t>(l0)];
+    const int lb = l0, lt = l1 + 1;
+    for (int j = 0; j < N; ++j) {
+      auto inner = [&](int l, int k) {
+        int r2 = torso_->ring_node(l, 2, k);
+        return column_node(k) || at_trochanter.count(r2) ? r2 : torso_->ring_node(l, 1, k);
+      };
+      std::array<int, 8> c{inner(lb, j), torso_->ring_node(lb, 3, j), torso_->ring_node(lb, 3, j + 1), inner(lb, j + 1),
+                           inner(lt, j), torso_->ring_node(lt, 3, j), torso_->ring_node(lt, 3, j + 1), inner(lt, j + 1)};
+      // Cut around the diagonal from the skin at the lower level to the wall at the upper
+      // one: the levels descend towards the front (rib inclination), and this diagonal
+      // gives the sheared cells their least flat tetras (largest edge / altitude 24 against
+      // 29 for the wall-to-skin diagonal).
+      c = {c[1], c[0], c[3], c[2], c[5], c[4], c[7], c[6]};
+      std::array<int, 8> h = torso_->oriented_cell(c);
+      for (const auto& t : kKuhn) {
+        std::array<int, 4> tn{h[static_cast<std::size_t>(t[0])], h[static_cast<std::size_t>(t[1])], h[static_cast<std::size_t>(t[2])],
+                              h[static_cast<std::size_t>(t[3])]};
+        auto vol = [&] { return (X(tn[1]) - X(tn[0])).dot((X(tn[2]) - X(tn[0])).cross(X(tn[3]) - X(tn[0]))); };
+        if (vol() < 0) std::swap(tn[2], tn[3]);
+        if (vol() <= 0)
+          throw std::runtime_error("torso flesh: tetra of zero volume in the cell of layers " + torso_->level(lb).name + " - " +
+                                   torso_->level(lt).name + ", angular cell " + std::to_string(j) + " (torso_sections.csv)");
+        m_.tetras.push_back(tn);
+        m_.tetra_part.push_back(flesh.at(L.region));
+      }
+      if (lt + 1 == torso_->levels()) torso_top_faces_.push_back({h[4], h[5], h[6], h[7]});
+      // The contacts on the skin take its shells as they are (a warped face's triangles):
+      // the tetras' outer faces are triangles of their own cut, not these quads.
+      for (const auto& f : skin_quad(skin.at(L.region), skin_tri.at(L.region), torso_->ring_face_span(lb, lt, 3, j))) torso_skin_.push_back(f);
+    }
+    tetra_flesh_rows_.push_back({lb, lt});
+  }
 }
 
 // Young's modulus of a disc part from its axial stiffness: E = k h / A over the disc
@@ -636,15 +752,15 @@ void Builder::build_pelvis() {
     // flesh and skin lateral of it stay deformable: 31 +- 11.5 mm of trochanteric soft tissue in men
     // (Nielson et al. 2009, J Clin Endocrinol Metab 94:491, DXA, MrOS), the skin at the
     // seated hip half-breadth over it (torso_sections.csv widest_forward_mm at z = 0).
-    constexpr double kTrochanterBone = 30.0;  // mm: trochanter and femoral neck medial of the landmark (est)
     std::set<int> skin_nodes;
     for (const auto& q : torso_skin_) skin_nodes.insert(q.begin(), q.end());
     std::vector<int> troch;
     Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
+    const std::vector<char> in_element = element_nodes();  // not the fine grid's nodes the tetra flesh leaves out
     for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n) {
       const Eigen::Vector3d& x = m_.nodes[static_cast<std::size_t>(n)];
       bool medial = std::abs(x.y()) <= std::abs(gt.y());  // at the bone, not in the tissue lateral of it
-      if ((x - gt).norm() <= kTrochanterBone && medial && !rigid_of_.count(n)) troch.push_back(n);
+      if ((x - gt).norm() <= kTrochanterBone && medial && !rigid_of_.count(n) && in_element[static_cast<std::size_t>(n)]) troch.push_back(n);
     }
     if (troch.empty())
       throw std::runtime_error("pelvis: no torso node within " + std::to_string(kTrochanterBone) + " mm of greater_trochanter_" + side +
@@ -964,15 +1080,21 @@ void Builder::build_shoulders() {
     int si = side == "r" ? 0 : 1;
     // Scapula: ring-2 faces of the posterior upper thorax (levels T2-T6, posterolateral cells).
     int sp = part("scapula_" + side, ElementKind::Shell, env_mat, "thorax", "shoulder", env_t);
+    int sp_tri = o_.flesh_tetra ? part("scapula_" + side + "_tria", ElementKind::Tria, env_mat, "thorax", "shoulder", env_t) : -1;
     std::vector<int> scap;
-    for (int l = 0; l + 1 < torso_->levels(); ++l) {
-      const LayerInfo& L = torso_layers_[static_cast<std::size_t>(l)];
-      double zb = torso_->level(l).z_spine;
-      if (zb < 360 || torso_->level(l + 1).z_spine > 475 || L.region != "thorax") continue;
+    // With the flesh as tetras (no ring 2) the patch is the skin over the same cells.
+    std::vector<std::pair<int, int>> rows = tetra_flesh_rows_;
+    if (!o_.flesh_tetra)
+      for (int l = 0; l + 1 < torso_->levels(); ++l) rows.push_back({l, l + 1});
+    for (const auto& [lb, lt] : rows) {
+      const LayerInfo& L = torso_layers_[static_cast<std::size_t>(lb)];
+      double zb = torso_->level(lb).z_spine;
+      if (zb < 360 || torso_->level(lt).z_spine > 475 || L.region != "thorax") continue;
       for (int j = N / 2 - 6; j <= N / 2 - 3; ++j) {
         int jj = side == "l" ? j : N - 1 - j;
-        auto q = torso_->ring_face(l, 2, jj);
-        shell(sp, q);
+        auto q = torso_->ring_face_span(lb, lt, o_.flesh_tetra ? 3 : 2, jj);
+        if (o_.flesh_tetra) skin_quad(sp, sp_tri, q);  // faces over two layers warp more
+        else shell(sp, q);
         scap.insert(scap.end(), q.begin(), q.end());
       }
     }
@@ -1064,19 +1186,7 @@ void Builder::build_contacts() {
   };
   // Neck base tied to the torso top (non-matching grids).
   {
-    std::vector<std::array<int, 4>> top;
-    const int l = torso_->levels() - 2;
-    for (int a = 0; a < torso_->m(); ++a)
-      for (int b = 0; b < torso_->m(); ++b) {
-        auto h = torso_->block_cell(l, a, b);
-        top.push_back({h[4], h[5], h[6], h[7]});
-      }
-    for (int r = 0; r < 3; ++r)
-      for (int j = 0; j < torso_->n(); ++j) {
-        auto h = torso_->ring_cell(l, r, j);
-        top.push_back({h[4], h[5], h[6], h[7]});
-      }
-    add("neck_base_tied_to_torso", 2, neck_->level_nodes(0), top, 0);
+    add("neck_base_tied_to_torso", 2, neck_->level_nodes(0), torso_top_faces_, 0);
   }
   std::vector<int> arms = arm_env_nodes_[0];
   arms.insert(arms.end(), arm_env_nodes_[1].begin(), arm_env_nodes_[1].end());
@@ -1120,6 +1230,9 @@ FeModel Builder::run(ModelLandmarks* lm) {
   build_limbs();
   build_contacts();
   finalize_rigid_bodies();
+  // The fine grid's ring-2 nodes and the skin and wall nodes between the tetra flesh's cell
+  // rows belong to no element when the flesh is tetras.
+  m_.remove_unreferenced_nodes();
   // Parts whose every node is in a rigid body are flagged rigid (their elements do not
   // limit the time step: the solver treats them as rigid).
   std::vector<bool> in_rb(m_.nodes.size(), false);
@@ -1133,6 +1246,7 @@ FeModel Builder::run(ModelLandmarks* lm) {
     }
   };
   for (std::size_t e = 0; e < m_.bricks.size(); ++e) visit(m_.brick_part[e], m_.bricks[e].data(), 8);
+  for (std::size_t e = 0; e < m_.tetras.size(); ++e) visit(m_.tetra_part[e], m_.tetras[e].data(), 4);
   for (std::size_t e = 0; e < m_.shells.size(); ++e) visit(m_.shell_part[e], m_.shells[e].data(), 4);
   for (std::size_t e = 0; e < m_.trias.size(); ++e) visit(m_.tria_part[e], m_.trias[e].data(), 3);
   for (std::size_t p = 0; p < m_.parts.size(); ++p)

@@ -85,13 +85,15 @@ Deck model_cards(const FeModel& m, const std::string& title) {
   // Properties: three solid properties; one shell property per shell part; spring properties.
   // Solid properties share the bulk viscosity (qa 1.1, qb 0.05) and hourglass coefficient
   // (h 0.1, the viscous form's, and the physical form's small viscous part).
-  auto solid_property = [&d](int id, const std::string& name, int isolid) {
-    CardBuilder(d, "/PROP/TYPE14", id, name)
-        .set_int(0, "Isolid", isolid)
-        .set(1, "qa", 1.1)
-        .set(1, "qb", 0.05)
-        .set(1, "h", 0.1)
-        .commit();
+  // Tetras (the flesh of MesherOptions::flesh_tetra) are average nodal pressure tetras,
+  // Itetra4 3 (docs/engine-design.md §12.9): the constant strain tetra locks in nearly
+  // incompressible tissue.
+  const bool has_tetras = !m.tetras.empty();
+  auto solid_property = [&d, has_tetras](int id, const std::string& name, int isolid) {
+    CardBuilder c(d, "/PROP/TYPE14", id, name);
+    c.set_int(0, "Isolid", isolid);
+    if (has_tetras) c.set_int(0, "Itetra4", 3);
+    c.set(1, "qa", 1.1).set(1, "qb", 0.05).set(1, "h", 0.1).commit();
   };
   solid_property(kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass", 1);
   // Vertebral units and thoracolumbar discs (LAW1) are one or two bricks through their
@@ -165,6 +167,15 @@ Deck model_cards(const FeModel& m, const std::string& title) {
       std::size_t r = c.add_row();
       c.row_set_int(r, "id", ++eid);
       for (int k = 0; k < 8; ++k) c.row_set_int(r, bn[k], m.bricks[e][static_cast<std::size_t>(k)] + 1);
+    }
+    c.commit();
+  });
+  by_part(m.tetra_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
+    CardBuilder c(d, "/TETRA4", p.id);
+    for (std::size_t e : els) {
+      std::size_t r = c.add_row();
+      c.row_set_int(r, "id", ++eid);
+      for (int k = 0; k < 4; ++k) c.row_set_int(r, bn[k], m.tetras[e][static_cast<std::size_t>(k)] + 1);
     }
     c.commit();
   });

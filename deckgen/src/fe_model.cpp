@@ -3,6 +3,7 @@
 #include "hbm/deckgen/fe_model.hpp"
 
 #include <cmath>
+#include <vector>
 
 namespace hbm::deckgen {
 
@@ -38,6 +39,49 @@ int FeModel::find_part(const std::string& name) const {
   for (std::size_t i = 0; i < parts.size(); ++i)
     if (parts[i].name == name) return static_cast<int>(i);
   return -1;
+}
+
+std::size_t FeModel::remove_unreferenced_nodes() {
+  std::vector<char> used(nodes.size(), 0);
+  auto mark = [&](int n) { used[static_cast<std::size_t>(n)] = 1; };
+  for (const auto& e : bricks) for (int n : e) mark(n);
+  for (const auto& e : tetras) for (int n : e) mark(n);
+  for (const auto& e : shells) for (int n : e) mark(n);
+  for (const auto& e : trias) for (int n : e) mark(n);
+  for (const auto& e : springs) for (int n : e) mark(n);
+  for (const auto& r : rigid_bodies) {
+    mark(r.main_node);
+    for (int n : r.nodes) mark(n);
+  }
+  for (const auto& f : interfaces) {
+    for (int n : f.secondary) mark(n);
+    for (const auto& s : f.main_segments) for (int n : s) mark(n);
+  }
+  std::vector<int> new_id(nodes.size(), -1);
+  std::vector<Eigen::Vector3d> kept;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (used[i]) {
+      new_id[i] = static_cast<int>(kept.size());
+      kept.push_back(nodes[i]);
+    }
+  const std::size_t dropped = nodes.size() - kept.size();
+  if (dropped == 0) return 0;
+  auto re = [&](int& n) { n = new_id[static_cast<std::size_t>(n)]; };
+  for (auto& e : bricks) for (int& n : e) re(n);
+  for (auto& e : tetras) for (int& n : e) re(n);
+  for (auto& e : shells) for (int& n : e) re(n);
+  for (auto& e : trias) for (int& n : e) re(n);
+  for (auto& e : springs) for (int& n : e) re(n);
+  for (auto& r : rigid_bodies) {
+    re(r.main_node);
+    for (int& n : r.nodes) re(n);
+  }
+  for (auto& f : interfaces) {
+    for (int& n : f.secondary) re(n);
+    for (auto& s : f.main_segments) for (int& n : s) re(n);
+  }
+  nodes = std::move(kept);
+  return dropped;
 }
 
 int FeModel::find_material(const std::string& name) const {

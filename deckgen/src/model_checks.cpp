@@ -50,6 +50,23 @@ double hex_volume(const FeModel& m, const std::array<int, 8>& h) {
 double quad_area(const V3& a, const V3& b, const V3& c, const V3& d) { return 0.5 * (c - a).cross(d - b).norm(); }
 double tri_area(const V3& a, const V3& b, const V3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
 
+double tet_volume(const FeModel& m, const std::array<int, 4>& t) {
+  const V3& a = X(m, t[0]);
+  return (X(m, t[1]) - a).dot((X(m, t[2]) - a).cross(X(m, t[3]) - a)) / 6;
+}
+
+// Smallest altitude 3 V / A_max of a tetra (its characteristic length for the step) and
+// longest edge.
+std::pair<double, double> tet_altitude_and_edge(const FeModel& m, const std::array<int, 4>& t) {
+  static constexpr int kTetFaces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+  double amax = 0, lmax = 0;
+  for (const auto& f : kTetFaces)
+    amax = std::max(amax, tri_area(X(m, t[static_cast<std::size_t>(f[0])]), X(m, t[static_cast<std::size_t>(f[1])]), X(m, t[static_cast<std::size_t>(f[2])])));
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) lmax = std::max(lmax, (X(m, t[static_cast<std::size_t>(i)]) - X(m, t[static_cast<std::size_t>(j)])).norm());
+  return {amax > 0 ? 3 * tet_volume(m, t) / amax : 0.0, lmax};
+}
+
 double hex_char_length(const FeModel& m, const std::array<int, 8>& h) {
   double amax = 0;
   for (const auto& f : kFaces)
@@ -81,6 +98,7 @@ double shell_t(const FeModel& m, int part, double elem_t) {
 std::string kind_name(ElementKind k) {
   switch (k) {
     case ElementKind::Brick: return "BRICK";
+    case ElementKind::Tetra: return "TETRA4";
     case ElementKind::Shell: return "SHELL";
     case ElementKind::Tria: return "SH3N";
     case ElementKind::Spring: return "SPRING";
@@ -116,6 +134,7 @@ void segment_points(const FeModel& m, const SegmentCuts& cuts, const std::string
     }
   };
   for (std::size_t e = 0; e < m.bricks.size(); ++e) add(m.brick_part[e], m.bricks[e].data(), 8, element_mass(m, ElementKind::Brick, e));
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) add(m.tetra_part[e], m.tetras[e].data(), 4, element_mass(m, ElementKind::Tetra, e));
   for (std::size_t e = 0; e < m.shells.size(); ++e) add(m.shell_part[e], m.shells[e].data(), 4, element_mass(m, ElementKind::Shell, e));
   for (std::size_t e = 0; e < m.trias.size(); ++e) add(m.tria_part[e], m.trias[e].data(), 3, element_mass(m, ElementKind::Tria, e));
 }
@@ -125,6 +144,7 @@ void segment_points(const FeModel& m, const SegmentCuts& cuts, const std::string
 double element_mass(const FeModel& m, ElementKind kind, std::size_t e) {
   switch (kind) {
     case ElementKind::Brick: return mat_of(m, m.brick_part[e]).rho * hex_volume(m, m.bricks[e]);
+    case ElementKind::Tetra: return mat_of(m, m.tetra_part[e]).rho * tet_volume(m, m.tetras[e]);
     case ElementKind::Shell: {
       const auto& q = m.shells[e];
       return mat_of(m, m.shell_part[e]).rho * quad_area(X(m, q[0]), X(m, q[1]), X(m, q[2]), X(m, q[3])) *
@@ -143,6 +163,8 @@ std::vector<double> element_nodal_masses(const FeModel& m) {
   std::vector<double> nm(m.nodes.size(), 0.0);
   for (std::size_t e = 0; e < m.bricks.size(); ++e)
     for (int n : m.bricks[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Brick, e) / 8;
+  for (std::size_t e = 0; e < m.tetras.size(); ++e)
+    for (int n : m.tetras[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Tetra, e) / 4;
   for (std::size_t e = 0; e < m.shells.size(); ++e)
     for (int n : m.shells[e]) nm[static_cast<std::size_t>(n)] += element_mass(m, ElementKind::Shell, e) / 4;
   for (std::size_t e = 0; e < m.trias.size(); ++e)
@@ -259,6 +281,7 @@ void assign_rigid_body_masses(FeModel& m, const GeometrySources& g, const ModelL
 std::vector<BudgetRow> element_budget(const FeModel& m) {
   std::map<std::pair<std::string, std::string>, std::size_t> c;
   for (int p : m.brick_part) c[{m.parts[static_cast<std::size_t>(p)].region, "BRICK"}]++;
+  for (int p : m.tetra_part) c[{m.parts[static_cast<std::size_t>(p)].region, "TETRA4"}]++;
   for (int p : m.shell_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SHELL"}]++;
   for (int p : m.tria_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SH3N"}]++;
   for (int p : m.spring_part) c[{m.parts[static_cast<std::size_t>(p)].region, "SPRING"}]++;
@@ -303,6 +326,11 @@ TimeStepReport time_step_check(const FeModel& m, double tsca, double tmin) {
   for (std::size_t e = 0; e < m.bricks.size(); ++e) {
     int p = m.brick_part[e];
     element(p, m.bricks[e].data(), 8, hex_char_length(m, m.bricks[e]), mat_of(m, p).solid_wave_speed(), element_mass(m, ElementKind::Brick, e));
+  }
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+    int p = m.tetra_part[e];
+    element(p, m.tetras[e].data(), 4, tet_altitude_and_edge(m, m.tetras[e]).first, mat_of(m, p).solid_wave_speed(),
+            element_mass(m, ElementKind::Tetra, e));
   }
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     int p = m.shell_part[e];
@@ -376,6 +404,25 @@ std::vector<QualityRow> quality_check(const FeModel& m, const QualityLimits& lim
     row.length_min = std::min(row.length_min, lmin);
     if (jmin <= 0 || jr < lim.brick_jacobian_hard || ar > lim.brick_aspect_hard) row.failing++;
     if (jr < lim.brick_jacobian_min || ar > lim.brick_aspect_max) row.soft_failing++;
+  }
+  // Tetras: not inverted; aspect = longest edge / smallest altitude (1.22 for the regular
+  // tetra, 2.45 for the six tetras of a cube cut around its diagonal).
+  for (std::size_t e = 0; e < m.tetras.size(); ++e) {
+    auto& row = rows[static_cast<std::size_t>(m.tetra_part[e])];
+    if (row.kind == "BRICK" && row.elements == 0) row.kind = "TETRA4";
+    else if (row.kind == "BRICK") row.kind = "BRICK+TETRA4";
+    const auto& t = m.tetras[e];
+    auto [h, lmax] = tet_altitude_and_edge(m, t);
+    double lmin = 1e300;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) lmin = std::min(lmin, (X(m, t[static_cast<std::size_t>(i)]) - X(m, t[static_cast<std::size_t>(j)])).norm());
+    double ar = h > 0 ? lmax / h : 1e30;
+    row.elements++;
+    if (h <= 0) row.inverted++;
+    row.aspect_max = std::max(row.aspect_max, ar);
+    row.length_min = std::min(row.length_min, lmin);
+    if (h <= 0 || ar > lim.tetra_aspect_hard) row.failing++;
+    if (ar > lim.tetra_aspect_max) row.soft_failing++;
   }
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
     auto& row = rows[static_cast<std::size_t>(m.shell_part[e])];
@@ -537,16 +584,17 @@ bool print_quality(std::ostream& os, const std::vector<QualityRow>& rows, const 
   os << "Element quality per part. Every element: not inverted; brick Jacobian ratio >= " << lim.brick_jacobian_hard
      << ", aspect <= " << lim.brick_aspect_hard << "; shell Jacobian >= " << lim.shell_jacobian_hard << ", aspect <= "
      << lim.shell_aspect_hard << ", warpage <= " << lim.shell_warpage_hard_deg << " deg; SH3N aspect <= " << lim.tria_aspect_hard
-     << ".\n  Target (at most " << lim.soft_share_max * 100 << " % of a part of >= 20 elements outside): brick Jacobian >= " << lim.brick_jacobian_min
+     << "; TETRA4 aspect (edge / altitude) <= " << lim.tetra_aspect_hard << ".\n  Target (at most " << lim.soft_share_max * 100 << " % of a part of >= 20 elements outside): brick Jacobian >= " << lim.brick_jacobian_min
      << ", aspect <= " << lim.brick_aspect_max << "; shell Jacobian >= " << lim.shell_jacobian_min << ", aspect <= "
-     << lim.shell_aspect_max << ", warpage <= " << lim.shell_warpage_max_deg << " deg; SH3N aspect <= " << lim.tria_aspect_max << ".\n";
-  os << "  " << std::left << std::setw(26) << "part" << std::setw(7) << "type" << std::right << std::setw(7) << "elems" << std::setw(5)
+     << lim.shell_aspect_max << ", warpage <= " << lim.shell_warpage_max_deg << " deg; SH3N aspect <= " << lim.tria_aspect_max
+     << "; TETRA4 aspect <= " << lim.tetra_aspect_max << ".\n";
+  os << "  " << std::left << std::setw(26) << "part" << std::setw(13) << "type" << std::right << std::setw(7) << "elems" << std::setw(5)
      << "inv" << std::setw(8) << "jac_min" << std::setw(8) << "asp_max" << std::setw(9) << "warp_max" << std::setw(8) << "l_min" << std::setw(6)
      << "hard" << std::setw(8) << "target%" << "  status\n";
   bool ok = true;
   for (const auto& r : rows) {
     bool rok = quality_ok(r, lim);
-    os << "  " << std::left << std::setw(26) << r.part << std::setw(7) << r.kind << std::right << std::setw(7) << r.elements << std::setw(5)
+    os << "  " << std::left << std::setw(26) << r.part << std::setw(13) << r.kind << std::right << std::setw(7) << r.elements << std::setw(5)
        << r.inverted << std::fixed << std::setprecision(2) << std::setw(8) << r.jacobian_min << std::setw(8) << r.aspect_max << std::setw(9)
        << r.warpage_max_deg << std::setw(8) << r.length_min << std::setw(6) << r.failing << std::setprecision(1) << std::setw(8)
        << 100.0 * static_cast<double>(r.soft_failing) / static_cast<double>(r.elements) << "  " << (rok ? "OK" : "FAIL") << "\n";

@@ -57,6 +57,26 @@ std::vector<std::array<int, 4>> hex_boundary_faces(const std::vector<std::array<
   return out;
 }
 
+std::vector<std::array<int, 4>> tet_boundary_faces(const std::vector<std::array<int, 4>>& tets) {
+  // Outward faces of a positively oriented tetra (n2 - n1) . ((n3 - n1) x (n4 - n1)) > 0,
+  // as triangles with n4 = n3.
+  static constexpr int kFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::map<std::array<int, 3>, std::pair<int, std::array<int, 4>>> count;
+  for (const auto& t : tets)
+    for (const auto& f : kFaces) {
+      std::array<int, 3> key{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])], t[static_cast<std::size_t>(f[2])]};
+      std::array<int, 4> q{key[0], key[1], key[2], key[2]};
+      std::sort(key.begin(), key.end());
+      auto& e = count[key];
+      e.first++;
+      e.second = q;
+    }
+  std::vector<std::array<int, 4>> out;
+  for (const auto& [key, e] : count)
+    if (e.first == 1) out.push_back(e.second);
+  return out;
+}
+
 TriSurface triangulate(const std::vector<Eigen::Vector3d>& nodes, const std::vector<std::array<int, 4>>& quads) {
   TriSurface s;
   std::map<int, int> local;

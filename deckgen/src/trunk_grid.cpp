@@ -178,8 +178,8 @@ std::array<int, 8> TrunkGrid::block_cell(int l, int a, int b) const {
                    block_node(l + 1, a, b), block_node(l + 1, a + 1, b), block_node(l + 1, a + 1, b + 1), block_node(l + 1, a, b + 1)});
 }
 
-std::array<int, 4> TrunkGrid::ring_face(int l, int r, int j) const {
-  std::array<int, 4> q{ring_node(l, r, j), ring_node(l, r, j + 1), ring_node(l + 1, r, j + 1), ring_node(l + 1, r, j)};
+std::array<int, 4> TrunkGrid::ring_face_span(int l, int l_top, int r, int j) const {
+  std::array<int, 4> q{ring_node(l, r, j), ring_node(l, r, j + 1), ring_node(l_top, r, j + 1), ring_node(l_top, r, j)};
   auto P = [&](int i) { return model_.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
   Eigen::Vector3d nrm = tri_cross(P(0), P(1), P(2)) + tri_cross(P(0), P(2), P(3));
   Eigen::Vector3d c = 0.25 * (P(0) + P(1) + P(2) + P(3));

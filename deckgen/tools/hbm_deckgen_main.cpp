@@ -33,6 +33,9 @@ int main(int argc, char** argv) {
   app.add_flag("--check-only", check_only, "build and check the model, write nothing");
   app.add_flag("--force", force, "write the decks even if a check fails");
   app.add_flag("--no-drop", no_drop, "do not write the drop-test deck pair");
+  bool flesh_bricks = false;
+  app.add_flag("--flesh-bricks", flesh_bricks,
+               "torso flesh as two rings of one-point bricks (the layout before 2026-11-24; docs/engine-design.md section 12.10)");
   CLI11_PARSE(app, argc, argv);
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
       g.skeleton.set_joint(jn, deg * M_PI / 180);
     }
     dg::MesherOptions o;
+    o.flesh_tetra = !flesh_bricks;
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
     dg::assign_rigid_body_masses(m, g, lm);

@@ -19,9 +19,13 @@ struct MesherOptions {
   int torso_around = 32;  // nodes around the torso (multiple of 8)
   int neck_around = 16;   // nodes around the neck (multiple of 8)
   int limb_around = 12;   // nodes around a limb envelope
-  double limb_ring_spacing = 32;  // mm between limb envelope rings
+  double limb_ring_spacing = 40;  // mm between limb envelope rings (32 before the tetra flesh took the elements)
   int head_cells = 6;     // cube-sphere cells per cube face edge
   int clavicle_around = 6, clavicle_along = 8;
+  // Torso flesh as one layer of average nodal pressure tetras over cells two layers high
+  // (body_mesher.cpp build_tetra_flesh); false: two rings of one-point bricks, whose
+  // hourglass energy issue #8 does not accept (docs/engine-design.md §12.10).
+  bool flesh_tetra = true;
 };
 
 // Landmarks of the built model used by the checks (region boundaries for the trunk CoG).

@@ -13,7 +13,9 @@
 
 namespace hbm::deckgen {
 
-enum class ElementKind { Brick, Shell, Tria, Spring };
+// Brick: a solid part (its elements are in `bricks` and `tetras`); Tetra names a tetra's
+// element list in element_mass().
+enum class ElementKind { Brick, Tetra, Shell, Tria, Spring };
 
 // Material in model units (density kg/mm^3, moduli GPa, beta 1/ms).
 struct FeMaterial {
@@ -76,6 +78,9 @@ struct FeModel {
   // Element groups: part index per element; node indices.
   std::vector<std::array<int, 8>> bricks;
   std::vector<int> brick_part;
+  // 4-node tetras of solid parts (ElementKind::Brick parts: a solid part may hold both).
+  std::vector<std::array<int, 4>> tetras;
+  std::vector<int> tetra_part;
   std::vector<std::array<int, 4>> shells;
   std::vector<int> shell_part;
   std::vector<double> shell_thick;
@@ -96,7 +101,10 @@ struct FeModel {
   int add_part(FePart p);
   int find_part(const std::string& name) const;
   int find_material(const std::string& name) const;
-  std::size_t element_count() const { return bricks.size() + shells.size() + trias.size() + springs.size(); }
+  std::size_t element_count() const { return bricks.size() + tetras.size() + shells.size() + trias.size() + springs.size(); }
+  // Drops the nodes no element, rigid body or interface refers to and renumbers the rest
+  // in their order; returns how many were dropped.
+  std::size_t remove_unreferenced_nodes();
 };
 
 }  // namespace hbm::deckgen

@@ -116,6 +116,10 @@ struct QualityLimits {
   double shell_jacobian_min = 0.4, shell_aspect_max = 8, shell_warpage_max_deg = 15;  // target
   double shell_jacobian_hard = 0.2, shell_aspect_hard = 12, shell_warpage_hard_deg = 30;
   double tria_aspect_max = 8, tria_aspect_hard = 12;
+  // Tetras: longest edge / smallest altitude (1.22 regular; 2.45 for the six tetras of a
+  // cube; 1 / collapse in the preprocessors' terms, 30 = collapse 0.04). The flesh's sheared
+  // one-layer cells reach 24 on the abdominal flank, with a stable step 4 times the run's.
+  double tetra_aspect_max = 8, tetra_aspect_hard = 30;
   double soft_share_max = 0.20;
 };
 struct QualityRow {

@@ -19,6 +19,8 @@ struct TriSurface {
 // Boundary faces (faces used by exactly one hexahedron) of a set of hexahedra, as quads
 // with outward normals (node order of the element convention n1-n4 bottom, n5-n8 top).
 std::vector<std::array<int, 4>> hex_boundary_faces(const std::vector<std::array<int, 8>>& hexes);
+// The same for positively oriented tetras: triangles as quads with n4 = n3.
+std::vector<std::array<int, 4>> tet_boundary_faces(const std::vector<std::array<int, 4>>& tets);
 
 // Triangulated surface from quads (index into `nodes`); quads split along the shorter diagonal.
 TriSurface triangulate(const std::vector<Eigen::Vector3d>& nodes, const std::vector<std::array<int, 4>>& quads);

@@ -51,7 +51,12 @@ class TrunkGrid {
   std::array<int, 8> ring_cell(int l, int r, int j) const;
   std::array<int, 8> block_cell(int l, int a, int b) const;
   // Quad on ring r between angular nodes j, j+1 and levels l, l+1, normal pointing outwards.
-  std::array<int, 4> ring_face(int l, int r, int j) const;
+  std::array<int, 4> ring_face(int l, int r, int j) const { return ring_face_span(l, l + 1, r, j); }
+  // The same between levels l_bottom and l_top (a face spanning several layers).
+  std::array<int, 4> ring_face_span(int l_bottom, int l_top, int r, int j) const;
+  // Cell spanning layers: the 8 given nodes (n1-n4 on the lower level, n5-n8 above them)
+  // reordered to a positive volume as ring_cell orders its own.
+  std::array<int, 8> oriented_cell(const std::array<int, 8>& h) const { return oriented(h); }
   // All node indices of level l.
   std::vector<int> level_nodes(int l) const;
   // Back midline angular index (N/2): the spine column is the cells j = N/2-1 and N/2 of
