@@ -361,6 +361,32 @@ TEST(Mechanics, SandwichPlateKeepsTheCorticesStiffness) {
   EXPECT_NEAR(solid.modulus_scale, 1, 1e-12);
 }
 
+TEST(Model, PelvicJointBandsHaveTheStiffnessOfTheirJointSpace) {
+  // A band of length L across a joint (sacroiliac, pubic) stands for fibrocartilage of the
+  // joint space g (shell_sections.csv joint_gap_mm): its membrane stiffness across the joint,
+  // summed over the bands, E_band t h / L, is the joint's E_fc t h / g.
+  const Built& b = model();
+  const int p = b.m.find_part("pelvic_joints");
+  ASSERT_GE(p, 0);
+  const FePart& part = b.m.parts[static_cast<std::size_t>(p)];
+  const double E_band = b.m.materials[static_cast<std::size_t>(part.material)].E;
+  const double E_fc = b.g.material("pelvic_joint").e_or_k * 1e-3;  // MPa -> GPa
+  const double gap = b.g.shell_sections.at("pelvic_joints").joint_gap;
+  double k_band = 0, k_joint = 0;
+  int n = 0;
+  for (std::size_t e = 0; e < b.m.shells.size(); ++e) {
+    if (b.m.shell_part[e] != p) continue;
+    const auto& q = b.m.shells[e];
+    auto P = [&](int i) { return b.m.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
+    const double L = 0.5 * ((P(1) - P(0)).norm() + (P(2) - P(3)).norm()), h = 0.5 * ((P(3) - P(0)).norm() + (P(2) - P(1)).norm());
+    k_band += E_band * part.thickness * h / L;
+    k_joint += E_fc * part.thickness * h / gap;
+    ++n;
+  }
+  ASSERT_GT(n, 0);
+  EXPECT_NEAR(k_band / k_joint, 1.0, 0.05) << n << " bands";
+}
+
 TEST(Model, PelvisShellIsTheEquivalentOfItsSection) {
   // The pelvic bone shell has the membrane and bending stiffness of its section
   // (shell_sections.csv pelvis_cortex): two cortices tc on a plate T (a solid plate when

@@ -12,6 +12,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -692,10 +694,21 @@ void Builder::build_pelvis() {
   // Pelvic bone: a sandwich plate of two cortices over a trabecular core (shell_sections.csv).
   const auto [cortex_mat, cortex_t] = sandwich_material("pelvis_cortical", "pelvis_cortical", "pelvis_cortex");
   int cortex = part("pelvis_cortex", ElementKind::Shell, cortex_mat, "pelvis", "pelvis", cortex_t);
-  // Sacroiliac joints and pubic symphysis: bands of shells of the fibrocartilage's modulus,
-  // one ring cell long across the joint (shell_sections.csv pelvic_joints).
+  // Sacroiliac joints and pubic symphysis: bands of shells one ring cell long across the
+  // joint, as deep as the joint surfaces (shell_sections.csv pelvic_joints). A band of length
+  // L stands for fibrocartilage of the joint space g: the same axial stiffness E A / g needs
+  // the modulus E L / g (set below from the bands' mean length).
   const auto& js = g_.shell_sections.at("pelvic_joints");
-  int joint_part = part("pelvic_joints", ElementKind::Shell, material("pelvic_joint"), "pelvis", "pelvis", js.total_thickness);
+  const int joint_mat = m_.add_material(convert(g_.material("pelvic_joint"), "pelvic_joint"));
+  int joint_part = part("pelvic_joints", ElementKind::Shell, joint_mat, "pelvis", "pelvis", js.total_thickness);
+  double band_length = 0;
+  int bands = 0;
+  auto joint_band = [&](const std::array<int, 4>& q) {
+    shell(joint_part, q);
+    auto P = [&](int i) { return m_.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
+    band_length += 0.5 * ((P(1) - P(0)).norm() + (P(2) - P(3)).norm());  // across the joint: the ring direction
+    ++bands;
+  };
   const double z_pubis = g_.pelvis.at("pubic_symphysis").z(), z_isch = g_.pelvis.at("ischial_tuberosity_r").z();
   const double z_crest = std::max(g_.pelvis.at("asis_r").z(), g_.pelvis.at("iliac_tubercle_r").z());
   for (int l = 0; l + 1 < torso_->levels(); ++l) {
@@ -718,15 +731,26 @@ void Builder::build_pelvis() {
         bool si = j == jb;
         if (si && !sacral) continue;  // the posterior iliac edge is free above/below the sacrum
         auto q = torso_->ring_face(l, 1, jj);
-        shell(si ? joint_part : cortex, q);
+        if (si) joint_band(q);
+        else shell(cortex, q);
         for (int n : q) pelvis_shell_nodes_.insert(n);
       }
     if (pubic)
       for (int jj : {0, N - 1}) {
         auto q = torso_->ring_face(l, 1, jj);
-        shell(joint_part, q);
+        joint_band(q);
         for (int n : q) pelvis_shell_nodes_.insert(n);
       }
+  }
+  if (bands == 0) throw std::runtime_error("pelvis: no sacroiliac or pubic joint band (pelvis_landmarks.csv heights)");
+  {
+    FeMaterial& jm = m_.materials[static_cast<std::size_t>(joint_mat)];
+    const double L = band_length / bands;
+    jm.E *= L / js.joint_gap;
+    std::ostringstream src;
+    src << "; E x band length " << std::fixed << std::setprecision(1) << L << " mm / joint space " << js.joint_gap
+        << " mm (shell_sections.csv pelvic_joints)";
+    jm.source += src.str();
   }
   // Rigid acetabula (pelvis shell nodes within 40 mm of the acetabular centre) with the hip
   // joint centre as main node; rigid greater trochanter nodes join the femur rigid body.

@@ -307,7 +307,8 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
     s.height = t.number_or(r, "height_mm", 0);
     s.width = t.number_or(r, "width_mm", 0);
     s.core_density = t.number_or(r, "core_density", 0);
-    if (s.total_thickness < 0 || s.cortical < 0 || s.height < 0 || s.width < 0 || s.core_density < 0)
+    s.joint_gap = t.number_or(r, "joint_gap_mm", 0);
+    if (s.total_thickness < 0 || s.cortical < 0 || s.height < 0 || s.width < 0 || s.core_density < 0 || s.joint_gap < 0)
       t.fail(r, "", "negative section value");
     if (s.cortical > s.total_thickness / 2 + 1e-12 && s.total_thickness > 0 && s.cortical != s.total_thickness)
       t.fail(r, "cortical_mm", "cortex thicker than half the section");
@@ -317,6 +318,8 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("section '") + need + "' is missing");
   const ShellSection& cc = out["costal_cartilage"];
   if (cc.height <= 0 || cc.width <= 0) throw SourceError(file, cc.line, "height_mm", "costal cartilage needs height and width");
+  if (out["pelvic_joints"].joint_gap <= 0)
+    throw SourceError(file, out["pelvic_joints"].line, "joint_gap_mm", "the pelvic joint bands need the joint space they stand for (> 0)");
   for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope"})
     if (out[need].total_thickness <= 0) throw SourceError(file, out[need].line, "total_thickness_mm", std::string(need) + " needs a thickness > 0");
   return out;

@@ -93,6 +93,7 @@ struct SegmentTarget {
 
 struct ShellSection {
   double total_thickness = 0, cortical = 0, height = 0, width = 0, core_density = 0;
+  double joint_gap = 0;  // joint bands: the joint space the band stands for (mm)
   int line = 0;
 };
 
