@@ -337,6 +337,34 @@ TEST(Model, DiscBricksReproduceAxialStiffness) {
   }
 }
 
+TEST(FeModelNodes, UnreferencedNodesAreDroppedAndEveryReferenceRenumbered) {
+  // Nodes 0 and 3 belong to nothing; the rest are used by a tetra, a rigid body (main and
+  // secondary) and an interface (secondary and segment), each kept at its coordinates.
+  FeModel m;
+  for (int i = 0; i < 9; ++i) m.add_node(Eigen::Vector3d(i, 0, 0));
+  m.tetras.push_back({1, 2, 4, 5});
+  m.tetra_part.push_back(0);
+  FeRigidBody r;
+  r.main_node = 6;
+  r.nodes = {7};
+  m.rigid_bodies.push_back(r);
+  FeInterface f;
+  f.secondary = {8};
+  f.main_segments.push_back({1, 2, 4, 4});
+  m.interfaces.push_back(f);
+  EXPECT_EQ(m.remove_unreferenced_nodes(), 2u);
+  ASSERT_EQ(m.nodes.size(), 7u);
+  auto x = [&](int n) { return m.nodes[static_cast<std::size_t>(n)].x(); };
+  EXPECT_EQ(x(m.tetras[0][0]), 1);
+  EXPECT_EQ(x(m.tetras[0][2]), 4);
+  EXPECT_EQ(x(m.tetras[0][3]), 5);
+  EXPECT_EQ(x(m.rigid_bodies[0].main_node), 6);
+  EXPECT_EQ(x(m.rigid_bodies[0].nodes[0]), 7);
+  EXPECT_EQ(x(m.interfaces[0].secondary[0]), 8);
+  EXPECT_EQ(x(m.interfaces[0].main_segments[0][2]), 4);
+  EXPECT_EQ(m.remove_unreferenced_nodes(), 0u);
+}
+
 TEST(Mechanics, EquivalentRibStripKeepsBendingAndAxialStiffness) {
   // Hollow ellipse 13 x 6 mm, cortex 1 mm, strip height 20 mm.
   double h = 13, w = 6, t = 1, band = 20;

@@ -20,7 +20,10 @@ constexpr int kSolidProp = 1;          // soft tissue bricks (LAW34), viscous ho
 constexpr int kBoneSolidProp = 2;      // bone and thoracolumbar disc bricks (LAW1)
 constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical hourglass
 
-// Hourglass form of a soft tissue (LAW34) brick part (docs/engine-design.md 12.6).
+// Hourglass form of a soft tissue (LAW34) brick part (docs/engine-design.md 12.6). With the
+// default tetra flesh (12.10) the flesh parts hold tetras, which have no hourglass modes
+// (flesh_pelvis keeps 8 bricks under the coccyx); the brick layout (--flesh-bricks) is what
+// the rest of this note describes.
 // The organ blocks and the flesh of the abdomen and pelvis take the physical
 // stabilisation (Isolid 24: elastic assumed-strain hourglass stiffness from G, Belytschko
 // & Bindeman 1993): their bending and warping under the impactor, the seat and the floor
