@@ -37,15 +37,18 @@ Mesh to_cgal(const TriSurface& s) {
 
 }  // namespace
 
-std::vector<std::array<int, 4>> hex_boundary_faces(const std::vector<std::array<int, 8>>& hexes) {
-  // Faces with outward normals for the convention n1-n4 bottom (counter-clockwise seen from
-  // the top), n5-n8 top.
-  static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> count;
-  for (const auto& h : hexes)
+namespace {
+
+// Faces used by exactly one element, each as the quad the element gives it (a triangle with
+// n4 = n3). kFaces: the element's faces, K nodes each, outward-oriented.
+template <std::size_t NPE, std::size_t F, std::size_t K>
+std::vector<std::array<int, 4>> boundary_faces(const std::vector<std::array<int, NPE>>& elements, const int (&kFaces)[F][K]) {
+  std::map<std::array<int, K>, std::pair<int, std::array<int, 4>>> count;
+  for (const auto& el : elements)
     for (const auto& f : kFaces) {
-      std::array<int, 4> q{h[static_cast<std::size_t>(f[0])], h[static_cast<std::size_t>(f[1])], h[static_cast<std::size_t>(f[2])], h[static_cast<std::size_t>(f[3])]};
-      std::array<int, 4> key = q;
+      std::array<int, K> key{};
+      for (std::size_t i = 0; i < K; ++i) key[i] = el[static_cast<std::size_t>(f[i])];
+      std::array<int, 4> q{key[0], key[1], key[2], key[K - 1]};
       std::sort(key.begin(), key.end());
       auto& e = count[key];
       e.first++;
@@ -57,24 +60,19 @@ std::vector<std::array<int, 4>> hex_boundary_faces(const std::vector<std::array<
   return out;
 }
 
+}  // namespace
+
+std::vector<std::array<int, 4>> hex_boundary_faces(const std::vector<std::array<int, 8>>& hexes) {
+  // Faces with outward normals for the convention n1-n4 bottom (counter-clockwise seen from
+  // the top), n5-n8 top.
+  static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  return boundary_faces(hexes, kFaces);
+}
+
 std::vector<std::array<int, 4>> tet_boundary_faces(const std::vector<std::array<int, 4>>& tets) {
-  // Outward faces of a positively oriented tetra (n2 - n1) . ((n3 - n1) x (n4 - n1)) > 0,
-  // as triangles with n4 = n3.
+  // Outward faces of a positively oriented tetra (n2 - n1) . ((n3 - n1) x (n4 - n1)) > 0.
   static constexpr int kFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  std::map<std::array<int, 3>, std::pair<int, std::array<int, 4>>> count;
-  for (const auto& t : tets)
-    for (const auto& f : kFaces) {
-      std::array<int, 3> key{t[static_cast<std::size_t>(f[0])], t[static_cast<std::size_t>(f[1])], t[static_cast<std::size_t>(f[2])]};
-      std::array<int, 4> q{key[0], key[1], key[2], key[2]};
-      std::sort(key.begin(), key.end());
-      auto& e = count[key];
-      e.first++;
-      e.second = q;
-    }
-  std::vector<std::array<int, 4>> out;
-  for (const auto& [key, e] : count)
-    if (e.first == 1) out.push_back(e.second);
-  return out;
+  return boundary_faces(tets, kFaces);
 }
 
 TriSurface triangulate(const std::vector<Eigen::Vector3d>& nodes, const std::vector<std::array<int, 4>>& quads) {
