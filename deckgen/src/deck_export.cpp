@@ -20,21 +20,23 @@ constexpr int kSolidProp = 1;          // soft tissue bricks (LAW34), viscous ho
 constexpr int kBoneSolidProp = 2;      // bone and thoracolumbar disc bricks (LAW1)
 constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical hourglass
 
-// Hourglass form of a soft tissue (LAW34) brick part (docs/engine-design.md 12.6). With the
-// default tetra flesh (12.10) the flesh parts hold tetras, which have no hourglass modes
-// (flesh_pelvis keeps 8 bricks under the coccyx); the brick layout (--flesh-bricks) is what
-// the rest of this note describes.
+// Hourglass form of a soft tissue (LAW34) brick part (docs/engine-design.md 12.6, 12.10).
 // The organ blocks and the flesh of the abdomen and pelvis take the physical
 // stabilisation (Isolid 24: elastic assumed-strain hourglass stiffness from G, Belytschko
 // & Bindeman 1993): their bending and warping under the impactor, the seat and the floor
 // are deformations that the viscous form can only follow through its hourglass modes, so
 // it dissipated them as hourglass energy and carried load by that damping (drop deck 36.6 %
-// hourglass / internal energy, 7.4 % with this form). Two groups keep the viscous form
-// (Isolid 1): the thoracic flesh, a two-brick layer that the hub's rim folds until a brick
-// inverts with Isolid 24 (12.9-47.0 ms in the hub cases), and the neck's soft tissue (muscles,
-// visceral column, cervical discs), whose bricks inverted in every run that changed it.
-bool soft_tissue_physical_hourglass(const FePart& p) {
-  return p.segment != "neck" && p.name != "flesh_thorax";
+// hourglass / internal energy, 7.4 % with this form). With the default tetra flesh
+// (`tetra_flesh`: the flesh parts hold tetras, which have no hourglass modes; flesh_pelvis
+// keeps 8 bricks under the coccyx) the neck's soft tissue (muscles, visceral column,
+// cervical discs) takes it too: the hub cases' hourglass / internal energy 6.0 / 8.0 / 7.5 ->
+// 2.5 / 4.1 / 6.2 % (frontal 4.3, 6.7, oblique 9.5), the neck bricks no longer inverting
+// once the thorax under them is tetras. With the brick flesh (--flesh-bricks) two groups keep
+// the viscous form (Isolid 1): the thoracic flesh, a two-brick layer that the hub's rim
+// folds until a brick inverts with Isolid 24 (12.9-47.0 ms in the hub cases), and the neck's
+// soft tissue, whose bricks inverted in every run that changed it.
+bool soft_tissue_physical_hourglass(const FePart& p, bool tetra_flesh) {
+  return tetra_flesh || (p.segment != "neck" && p.name != "flesh_thorax");
 }
 
 int shell_prop_id(const FePart& p) { return 1000 + p.id; }
@@ -98,7 +100,13 @@ Deck model_cards(const FeModel& m, const std::string& title) {
     if (has_tetras) c.set_int(0, "Itetra4", 3);
     c.set(1, "qa", 1.1).set(1, "qb", 0.05).set(1, "h", 0.1).commit();
   };
-  solid_property(kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass", 1);
+  // The viscous form's property is written only for the parts that use it.
+  bool viscous_used = false;
+  for (const FePart& p : m.parts)
+    if (p.kind == ElementKind::Brick && m.materials[static_cast<std::size_t>(p.material)].law != "LAW1" &&
+        !soft_tissue_physical_hourglass(p, has_tetras))
+      viscous_used = true;
+  if (viscous_used) solid_property(kSolidProp, "soft tissue solids: 1-point brick, viscous hourglass", 1);
   // Vertebral units and thoracolumbar discs (LAW1) are one or two bricks through their
   // height and bend with the spine: for a one-point brick that bending is its hourglass
   // modes. The physical stabilisation (Isolid 24: assumed-strain hourglass stiffness from
@@ -146,7 +154,7 @@ Deck model_cards(const FeModel& m, const std::string& title) {
     } else {
       const FeMaterial& mat = m.materials[static_cast<std::size_t>(p.material)];
       const int solid_prop = mat.law == "LAW1"                    ? kBoneSolidProp
-                             : soft_tissue_physical_hourglass(p) ? kSoftPhysicalProp
+                             : soft_tissue_physical_hourglass(p, has_tetras) ? kSoftPhysicalProp
                                                                  : kSolidProp;
       c.set_int(0, "prop_id", p.kind == ElementKind::Brick ? solid_prop : shell_prop_id(p));
       c.set_int(0, "mat_id", mat.id);
