@@ -12,10 +12,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <iomanip>
-#include <sstream>
 #include <cmath>
+#include <iomanip>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -52,7 +52,6 @@ namespace {
 // mm: the greater trochanter and femoral neck medial of its landmark (the lateral bony
 // surface), est; torso nodes within it join the femur rigid body.
 constexpr double kTrochanterBone = 30.0;
-
 
 constexpr double kDensity = 1e-9;  // kg/m^3 -> kg/mm^3
 constexpr double kModulus = 1e-3;  // MPa -> GPa
@@ -1102,11 +1101,12 @@ void Builder::build_shoulders() {
   for (const char* s : {"r", "l"}) {
     std::string side = s;
     int si = side == "r" ? 0 : 1;
-    // Scapula: ring-2 faces of the posterior upper thorax (levels T2-T6, posterolateral cells).
+    // Scapula: the faces over the posterior upper thorax's posterolateral cells (levels
+    // T2-T6): ring 2 in the brick flesh; the skin with the tetra flesh, whose cells have no
+    // ring 2 (the rigid patch then lies at the skin, further out than the bone).
     int sp = part("scapula_" + side, ElementKind::Shell, env_mat, "thorax", "shoulder", env_t);
     int sp_tri = o_.flesh_tetra ? part("scapula_" + side + "_tria", ElementKind::Tria, env_mat, "thorax", "shoulder", env_t) : -1;
     std::vector<int> scap;
-    // With the flesh as tetras (no ring 2) the patch is the skin over the same cells.
     std::vector<std::pair<int, int>> rows = tetra_flesh_rows_;
     if (!o_.flesh_tetra)
       for (int l = 0; l + 1 < torso_->levels(); ++l) rows.push_back({l, l + 1});
