@@ -172,53 +172,26 @@ Deck model_cards(const FeModel& m, const std::string& title) {
     }
   };
   static const char* bn[8] = {"n1", "n2", "n3", "n4", "n5", "n6", "n7", "n8"};
-  by_part(m.brick_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
-    CardBuilder c(d, "/BRICK", p.id);
-    for (std::size_t e : els) {
-      std::size_t r = c.add_row();
-      c.row_set_int(r, "id", ++eid);
-      for (int k = 0; k < 8; ++k) c.row_set_int(r, bn[k], m.bricks[e][static_cast<std::size_t>(k)] + 1);
-    }
-    c.commit();
-  });
-  by_part(m.tetra_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
-    CardBuilder c(d, "/TETRA4", p.id);
-    for (std::size_t e : els) {
-      std::size_t r = c.add_row();
-      c.row_set_int(r, "id", ++eid);
-      for (int k = 0; k < 4; ++k) c.row_set_int(r, bn[k], m.tetras[e][static_cast<std::size_t>(k)] + 1);
-    }
-    c.commit();
-  });
-  by_part(m.shell_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
-    CardBuilder c(d, "/SHELL", p.id);
-    for (std::size_t e : els) {
-      std::size_t r = c.add_row();
-      c.row_set_int(r, "id", ++eid);
-      for (int k = 0; k < 4; ++k) c.row_set_int(r, bn[k], m.shells[e][static_cast<std::size_t>(k)] + 1);
-      if (m.shell_thick[e] > 0) c.row_set(r, "thick", std::round(m.shell_thick[e] * 1e6) / 1e6);
-    }
-    c.commit();
-  });
-  by_part(m.tria_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
-    CardBuilder c(d, "/SH3N", p.id);
-    for (std::size_t e : els) {
-      std::size_t r = c.add_row();
-      c.row_set_int(r, "id", ++eid);
-      for (int k = 0; k < 3; ++k) c.row_set_int(r, bn[k], m.trias[e][static_cast<std::size_t>(k)] + 1);
-      if (m.tria_thick[e] > 0) c.row_set(r, "thick", std::round(m.tria_thick[e] * 1e6) / 1e6);
-    }
-    c.commit();
-  });
-  by_part(m.spring_part, [&](const FePart& p, const std::vector<std::size_t>& els) {
-    CardBuilder c(d, "/SPRING", p.id);
-    for (std::size_t e : els) {
-      std::size_t r = c.add_row();
-      c.row_set_int(r, "id", ++eid);
-      c.row_set_int(r, "n1", m.springs[e][0] + 1).row_set_int(r, "n2", m.springs[e][1] + 1);
-    }
-    c.commit();
-  });
+  // One card per part: element id, its nodes and, for shells given one, the element's own
+  // thickness (thick: nullptr for solids).
+  auto element_cards = [&](const char* keyword, const auto& elements, const std::vector<int>& part_of,
+                           const std::vector<double>* thick) {
+    by_part(part_of, [&](const FePart& p, const std::vector<std::size_t>& els) {
+      CardBuilder c(d, keyword, p.id);
+      for (std::size_t e : els) {
+        std::size_t r = c.add_row();
+        c.row_set_int(r, "id", ++eid);
+        for (std::size_t k = 0; k < elements[e].size(); ++k) c.row_set_int(r, bn[k], elements[e][k] + 1);
+        if (thick && (*thick)[e] > 0) c.row_set(r, "thick", std::round((*thick)[e] * 1e6) / 1e6);
+      }
+      c.commit();
+    });
+  };
+  element_cards("/BRICK", m.bricks, m.brick_part, nullptr);
+  element_cards("/TETRA4", m.tetras, m.tetra_part, nullptr);
+  element_cards("/SHELL", m.shells, m.shell_part, &m.shell_thick);
+  element_cards("/SH3N", m.trias, m.tria_part, &m.tria_thick);
+  element_cards("/SPRING", m.springs, m.spring_part, nullptr);
   // Rigid bodies.
   for (const FeRigidBody& rb : m.rigid_bodies) {
     node_group(d, rbody_group_id(rb), "rigid body " + rb.name, rb.nodes);

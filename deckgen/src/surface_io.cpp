@@ -13,6 +13,8 @@
 #include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <type_traits>
+#include <utility>
 
 namespace hbm::deckgen {
 
@@ -105,25 +107,21 @@ bool print_surface_check(std::ostream& os, const FeModel& m) {
     const FePart& p = m.parts[static_cast<std::size_t>(part)];
     return p.segment == "thorax" || p.segment == "abdomen" || p.segment == "pelvis";
   };
-  auto volume_of = [&](ElementKind kind, std::size_t e, int part) {
-    return element_mass(m, kind, e) / m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)].rho;
+  // The torso's elements of one kind and their volume.
+  auto torso_elements = [&](ElementKind kind, const auto& elements, const std::vector<int>& part_of) {
+    std::vector<typename std::decay_t<decltype(elements)>::value_type> out;
+    double volume = 0;
+    for (std::size_t e = 0; e < elements.size(); ++e)
+      if (torso_part(part_of[e])) {
+        out.push_back(elements[e]);
+        volume += element_mass(m, kind, e) / m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part_of[e])].material)].rho;
+      }
+    return std::pair(out, volume);
   };
-  std::vector<std::array<int, 8>> torso;
-  double hex_volume = 0;
-  for (std::size_t e = 0; e < m.bricks.size(); ++e)
-    if (torso_part(m.brick_part[e])) {
-      torso.push_back(m.bricks[e]);
-      hex_volume += volume_of(ElementKind::Brick, e, m.brick_part[e]);
-    }
+  const auto [torso, hex_volume] = torso_elements(ElementKind::Brick, m.bricks, m.brick_part);
   // The torso's tetras (flesh cut into tetras over a coarser grid than the bricks under it,
   // whose faces they do not share) bound a closed surface of their own, checked apart.
-  std::vector<std::array<int, 4>> tets;
-  double tet_volume = 0;
-  for (std::size_t e = 0; e < m.tetras.size(); ++e)
-    if (torso_part(m.tetra_part[e])) {
-      tets.push_back(m.tetras[e]);
-      tet_volume += volume_of(ElementKind::Tetra, e, m.tetra_part[e]);
-    }
+  const auto [tets, tet_volume] = torso_elements(ElementKind::Tetra, m.tetras, m.tetra_part);
   auto report = [&os](const char* what, const TriSurface& s, double element_volume) {
     SurfaceReport r = check_surface(s);
     bool vol_ok = r.closed && std::abs(r.volume - element_volume) <= 1e-3 * element_volume;
