@@ -470,3 +470,61 @@ TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
   EXPECT_NEAR(fa[2], PenaltyContact::law_force(g - 0.44, g, kp, kmax, false), 1e-12);
   EXPECT_NEAR(fa[3], PenaltyContact::law_force(g - 0.36, g, kp, kmax, false), 1e-12);
 }
+
+// Inacti 6 during the run, a change of closest segment: a node rests 0.4 deep in the 0.5 gap
+// of a soft solid face (k0 1) and slides, at that depth, onto the neighbouring face of a
+// stiffer element (k0 100). Its penalty potential would jump from 0.5 x 1 x 0.4^2 to
+// 0.5 x 100 x 0.4^2 (+7.92) with no work done: treated as an initial penetration (gap 0.95 d,
+// no force, no potential). Between two faces of the same stiffness the slide is seamless.
+TEST(ContactPenalty, InactiSixTreatsASwitchToAStifferSegmentAsAnEntry) {
+  const double g = 0.5, depth = 0.4;
+  auto run = [&](double k_second, int inacti, std::vector<double>& fz, std::vector<double>& u, std::size_t& entries) {
+    NodalState n;
+    // Two unit faces side by side (x in [-1, 0] and [0, 1]), one-sided, normal +z.
+    ContactSurface s;
+    const Index a = add_node(n, {-1, -1, 0}, 1.0), b = add_node(n, {0, -1, 0}, 1.0), c = add_node(n, {0, 1, 0}, 1.0),
+                d = add_node(n, {-1, 1, 0}, 1.0), e = add_node(n, {1, -1, 0}, 1.0), f = add_node(n, {1, 1, 0}, 1.0);
+    s.nodes.push_back({a, b, c, d});
+    s.nodes.push_back({b, e, f, c});
+    s.k0 = {1.0, k_second};
+    s.thickness = {0, 0};
+    s.one_sided = {1, 1};
+    s.depth = {1.0, 1.0};
+    const Index node = add_node(n, {-0.5, 0.0, 0.6}, 1e-3);
+    PenaltyContactParams p;
+    p.gapmin = g;
+    p.vis_s = 0;
+    p.fric = 0;
+    p.inacti = inacti;
+    PenaltyContact ct(s, {node}, p, n);
+    // Approach in steps of 0.01 (no entry), then slide across x = 0 at the same depth.
+    std::vector<std::array<double, 2>> path;
+    for (double z = 0.6; z > g - depth + 1e-9; z -= 0.01) path.push_back({-0.5, z});
+    for (double x : {-0.2, -0.02, 0.02, 0.2}) path.push_back({x, g - depth});
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      n.x.x[node] = path[k][0];
+      n.x.z[node] = path[k][1];
+      n.force.fill(0);
+      ct.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
+      fz.push_back(n.force.z[node]);
+      u.push_back(ct.elastic_energy());
+    }
+    entries = ct.n_entry_caps();
+  };
+  std::vector<double> f, u;
+  std::size_t entries = 0;
+  run(100.0, 6, f, u, entries);
+  const std::size_t last = f.size() - 1;
+  EXPECT_NEAR(u[last - 2], 0.5 * 1.0 * depth * depth, 1e-12) << "on the soft face, 0.4 deep";
+  EXPECT_EQ(entries, 1u);
+  EXPECT_EQ(u[last - 1], 0.0) << "on the stiff face: no potential made from nothing";
+  EXPECT_EQ(f[last - 1], 0.0);
+  std::vector<double> f0, u0;
+  run(100.0, 0, f0, u0, entries);
+  EXPECT_NEAR(u0[last - 1], 0.5 * 100.0 * depth * depth, 1e-9) << "Inacti 0: the jump the rule removes";
+  std::vector<double> fe, ue;
+  run(1.0, 6, fe, ue, entries);
+  EXPECT_EQ(entries, 0u) << "same stiffness: no entry";
+  EXPECT_NEAR(ue[last - 1], 0.5 * 1.0 * depth * depth, 1e-12);
+  EXPECT_NEAR(fe[last - 1], 1.0 * depth, 1e-12);
+}

@@ -101,6 +101,7 @@ PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary
   prev_normal_.assign(ns, V3{});
   if (p_.inacti == 5 || p_.inacti == 6) gap_cap_.assign(ns, std::numeric_limits<double>::infinity());
   prev_pen_.assign(ns, 0.0);
+  prev_energy_.assign(ns, 0.0);
   pair_friction_stored_.assign(ns, 0.0);
 
   // Margin: half the mean segment edge unless given.
@@ -311,6 +312,20 @@ bool PenaltyContact::project_candidate(const NodalState& nodes, std::size_t i, I
   return true;
 }
 
+std::pair<double, double> PenaltyContact::pair_stiffness(const NodalState& nodes, std::size_t i, Index seg) const {
+  const double km = surf_.k0[static_cast<std::size_t>(seg)];
+  double kp;
+  if (p_.istf == 1) kp = p_.stfac;
+  else if (p_.istf >= 2 && !node_k0_.empty()) kp = p_.stfac * combine(p_.istf, km, node_k0_[i]);
+  else kp = p_.stfac * km;
+  if (p_.stmin > 0) kp = std::max(kp, p_.stmin);
+  double kmax = std::isfinite(cap_per_mass_) ? cap_per_mass_ * nodes.mass[static_cast<std::size_t>(secondary_[i])]
+                                              : std::numeric_limits<double>::infinity();
+  if (p_.stmax > 0) kmax = std::min(kmax, p_.stmax);
+  if (!std::isfinite(kmax)) kmax = 100.0 * kp;
+  return {std::min(kp, kmax), kmax};
+}
+
 double PenaltyContact::initial_gap_cap(const NodalState& nodes, std::size_t i, const V3& xs) const {
   // Inacti 5: the gap of an initially penetrated node is its distance d0 to the closest
   // segment it penetrates; Inacti 6: Gap - P0 - 5 % (Gap - P0) = 0.95 d0 (OpenRadioss).
@@ -344,6 +359,7 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
   if (time < p_.tstart || time > p_.tstop) {
     std::fill(tangential_.begin(), tangential_.end(), V3{});
     std::fill(prev_segment_.begin(), prev_segment_.end(), kNoIndex);
+    std::fill(prev_energy_.begin(), prev_energy_.end(), 0.0);
     friction_dissipated_ += friction_stored_;
     friction_stored_ = 0;
     work_ += 0.5 * dt * power_prev;
@@ -397,8 +413,20 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     // node gains v dt of penetration per cycle (0.015 mm at 10 m/s). Without this the
     // potential of the penetration found (up to ~10 J for a node near a shell's
     // mid-surface under the stiffening law) appears at once: energy made from nothing.
-    if (capped && best_seg != kNoIndex && gap_cap_set_ && best_pen - prev_pen_[i] > kEntryJump * best_full_gap &&
+    // The same for a node in contact whose closest segment changes to a much stiffer one at
+    // the same depth (segment stiffness follows the element under it): the new pair's
+    // potential may exceed the old one's by more than an entry of kEntryJump g would make.
+    bool stiffer_switch = false;
+    if (capped && best_seg != kNoIndex && gap_cap_set_ && prev_segment_[i] != kNoIndex && best_seg != prev_segment_[i] &&
         best_signed != 0.0) {
+      const auto [kp_new, kmax_new] = pair_stiffness(nodes, i, best_seg);
+      const bool lin_new = surf_.one_sided[static_cast<std::size_t>(best_seg)] != 0;
+      const double e_new = law_energy(best_pen, best_gap, kp_new, kmax_new, lin_new);
+      const double e_entry = law_energy(std::min(kEntryJump * best_full_gap, best_gap), best_gap, kp_new, kmax_new, lin_new);
+      stiffer_switch = e_new - prev_energy_[i] > e_entry;
+    }
+    if (capped && best_seg != kNoIndex && gap_cap_set_ &&
+        (best_pen - prev_pen_[i] > kEntryJump * best_full_gap || stiffer_switch) && best_signed != 0.0) {
       gap_cap_[i] = gap_cap_factor() * best_signed;
       ++n_entry_caps_;
       best_seg = kNoIndex;
@@ -415,6 +443,7 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     }
     prev_pen_[i] = best_seg == kNoIndex ? 0.0 : best_pen;
     if (best_seg == kNoIndex) {
+      prev_energy_[i] = 0;
       // Released: what the tangential spring held is lost to friction.
       friction_dissipated_ += pair_friction_stored_[i];
       pair_friction_stored_[i] = 0;
@@ -427,21 +456,11 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     const int nn = surf_.is_triangle(su) ? 3 : 4;
 
     // Stiffness.
-    double km = surf_.k0[su];
-    double kp;
-    if (p_.istf == 1) kp = p_.stfac;
-    else if (p_.istf >= 2 && !node_k0_.empty()) kp = p_.stfac * combine(p_.istf, km, node_k0_[i]);
-    else kp = p_.stfac * km;
-    if (p_.stmin > 0) kp = std::max(kp, p_.stmin);
-    double kmax = std::isfinite(cap_per_mass_)
-                      ? cap_per_mass_ * nodes.mass[static_cast<std::size_t>(sn)]
-                      : std::numeric_limits<double>::infinity();
-    if (p_.stmax > 0) kmax = std::min(kmax, p_.stmax);
-    if (!std::isfinite(kmax)) kmax = 100.0 * kp;
-    kp = std::min(kp, kmax);
+    const auto [kp, kmax] = pair_stiffness(nodes, i, best_seg);
     const bool linear = surf_.one_sided[su] != 0;
     const double fn_el = law_force(best_pen, best_gap, kp, kmax, linear);
     elastic_energy_ += law_energy(best_pen, best_gap, kp, kmax, linear);
+    prev_energy_[i] = law_energy(best_pen, best_gap, kp, kmax, linear);
     // Tangent stiffness of the law: the nodal step, damping and friction spring see it.
     const double k_now = law_stiffness(best_pen, best_gap, kp, kmax, linear);
 

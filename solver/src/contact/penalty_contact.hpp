@@ -182,9 +182,13 @@ class PenaltyContact {
   ContactResultant resultant_;
 
   // Last cycle's force on each secondary node, its segment and weights (work update).
+  // Penalty stiffness kp and its cap kmax of secondary slot i against segment seg (Istf,
+  // Stfac, Stmin, Stmax and the fixed-step cap of the node's mass).
+  std::pair<double, double> pair_stiffness(const NodalState& nodes, std::size_t i, Index seg) const;
   std::vector<V3> prev_force_;
   std::vector<Index> prev_segment_;
   std::vector<double> prev_pen_;       // penetration of the last cycle (0: not in contact)
+  std::vector<double> prev_energy_;    // penalty potential of the last cycle's pair (0: none)
   std::size_t n_entry_caps_ = 0;       // Inacti 5/6: gaps reduced at an entry during the run
   std::vector<std::array<double, 4>> prev_weight_;
   std::vector<double> prev_damping_, prev_vn_;  // damping force (along prev normal), v_n
