@@ -16,7 +16,9 @@
 // Inacti 5/6: an initially penetrated node starts with its gap reduced to (95 % of) its
 // distance, which then grows back as it moves away (no initial kick). The same holds for a
 // node that enters a gap during the run deeper than kEntryJump of it in one cycle (past a
-// segment's edge, not by approaching it): "initial" is the first cycle of the penetration,
+// segment's edge, not by approaching it), or whose closest segment changes to one whose
+// pair potential exceeds the last cycle's by more than such an entry would make (a stiffer
+// element's face at the same depth): "initial" is the first cycle of the penetration,
 // as LS-DYNA's IGNORE = 1 reads it; OpenRadioss applies Inacti at t = 0 only.
 // Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
 // mass of node and segment; the total normal force is kept compressive. Coulomb friction
