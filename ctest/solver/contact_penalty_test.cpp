@@ -40,6 +40,20 @@ ContactSurface flat_quad(NodalState& n, double L, double m, double k0, bool one_
   return s;
 }
 
+// Moves `node` through the (x, z) positions of `path`, one cycle of 1e-3 each, and records
+// the z force on it and the contact's elastic energy after each.
+void drive_through(PenaltyContact& c, NodalState& n, Index node, const std::vector<std::array<double, 2>>& path,
+                   std::vector<double>& fz, std::vector<double>& u) {
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    n.x.x[node] = path[k][0];
+    n.x.z[node] = path[k][1];
+    n.force.fill(0);
+    c.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
+    fz.push_back(n.force.z[node]);
+    u.push_back(c.elastic_energy());
+  }
+}
+
 }  // namespace
 
 TEST(ContactPenalty, BounceOnFixedFaceMatchesSpringSolution) {
@@ -416,14 +430,7 @@ TEST(ContactPenalty, InactiSixTreatsAnEntryPastTheEdgeAsInitialPenetration) {
     p.vis_s = 0;
     p.inacti = inacti;
     PenaltyContact c(s, {node}, p, n);
-    for (std::size_t k = 0; k < xz.size(); ++k) {
-      n.x.x[node] = xz[k][0];
-      n.x.z[node] = xz[k][1];
-      n.force.fill(0);
-      c.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
-      fz.push_back(n.force.z[node]);
-      u.push_back(c.elastic_energy());
-    }
+    drive_through(c, n, node, xz, fz, u);
     entries = c.n_entry_caps();
   };
   const std::vector<std::array<double, 2>> slide = {{2.0, 0.1}, {1.02, 0.1}, {0.9, 0.1}, {0.9, 0.085}};
@@ -501,14 +508,7 @@ TEST(ContactPenalty, InactiSixTreatsASwitchToAStifferSegmentAsAnEntry) {
     std::vector<std::array<double, 2>> path;
     for (double z = 0.6; z > g - depth + 1e-9; z -= 0.01) path.push_back({-0.5, z});
     for (double x : {-0.2, -0.02, 0.02, 0.2}) path.push_back({x, g - depth});
-    for (std::size_t k = 0; k < path.size(); ++k) {
-      n.x.x[node] = path[k][0];
-      n.x.z[node] = path[k][1];
-      n.force.fill(0);
-      ct.add_forces(n, 1e-3 * static_cast<double>(k), 1e-3);
-      fz.push_back(n.force.z[node]);
-      u.push_back(ct.elastic_energy());
-    }
+    drive_through(ct, n, node, path, fz, u);
     entries = ct.n_entry_caps();
   };
   std::vector<double> f, u;
