@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace hbm::solver::contact {
 
@@ -416,15 +417,17 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     // The same for a node in contact whose closest segment changes to a much stiffer one at
     // the same depth (segment stiffness follows the element under it): the new pair's
     // potential may exceed the old one's by more than an entry of kEntryJump g would make.
-    bool stiffer_switch = false;
-    if (capped && best_seg != kNoIndex && gap_cap_set_ && prev_segment_[i] != kNoIndex && best_seg != prev_segment_[i] &&
-        best_signed != 0.0) {
-      const auto [kp_new, kmax_new] = pair_stiffness(nodes, i, best_seg);
-      const bool lin_new = surf_.one_sided[static_cast<std::size_t>(best_seg)] != 0;
-      const double e_new = law_energy(best_pen, best_gap, kp_new, kmax_new, lin_new);
-      const double e_entry = law_energy(std::min(kEntryJump * best_full_gap, best_gap), best_gap, kp_new, kmax_new, lin_new);
-      stiffer_switch = e_new - prev_energy_[i] > e_entry;
+    // The pair's stiffness and potential (used by the check and, kept, by the force).
+    double kp = 0, kmax = 0, e_pair = 0;
+    bool linear = false;
+    if (best_seg != kNoIndex) {
+      std::tie(kp, kmax) = pair_stiffness(nodes, i, best_seg);
+      linear = surf_.one_sided[static_cast<std::size_t>(best_seg)] != 0;
+      e_pair = law_energy(best_pen, best_gap, kp, kmax, linear);
     }
+    const bool stiffer_switch =
+        capped && best_seg != kNoIndex && gap_cap_set_ && prev_segment_[i] != kNoIndex && best_seg != prev_segment_[i] &&
+        e_pair - prev_energy_[i] > law_energy(std::min(kEntryJump * best_full_gap, best_gap), best_gap, kp, kmax, linear);
     if (capped && best_seg != kNoIndex && gap_cap_set_ &&
         (best_pen - prev_pen_[i] > kEntryJump * best_full_gap || stiffer_switch) && best_signed != 0.0) {
       gap_cap_[i] = gap_cap_factor() * best_signed;
@@ -455,12 +458,9 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     const std::array<Index, 4>& sg = surf_.nodes[su];
     const int nn = surf_.is_triangle(su) ? 3 : 4;
 
-    // Stiffness.
-    const auto [kp, kmax] = pair_stiffness(nodes, i, best_seg);
-    const bool linear = surf_.one_sided[su] != 0;
     const double fn_el = law_force(best_pen, best_gap, kp, kmax, linear);
-    elastic_energy_ += law_energy(best_pen, best_gap, kp, kmax, linear);
-    prev_energy_[i] = law_energy(best_pen, best_gap, kp, kmax, linear);
+    elastic_energy_ += e_pair;
+    prev_energy_[i] = e_pair;
     // Tangent stiffness of the law: the nodal step, damping and friction spring see it.
     const double k_now = law_stiffness(best_pen, best_gap, kp, kmax, linear);
 

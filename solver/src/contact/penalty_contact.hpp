@@ -139,6 +139,9 @@ class PenaltyContact {
                          SegmentProjection& pr, double& g, double& signed_d, V3& n) const;
   // Inacti 5/6: reduced gap of slot i at the first active cycle (+inf if not penetrated).
   double initial_gap_cap(const NodalState& nodes, std::size_t i, const V3& xs) const;
+  // Penalty stiffness kp and its cap kmax of secondary slot i against segment seg (Istf,
+  // Stfac, Stmin, Stmax and the fixed-step cap of the node's mass).
+  std::pair<double, double> pair_stiffness(const NodalState& nodes, std::size_t i, Index seg) const;
   double gap_cap_factor() const { return p_.inacti == 6 ? 0.95 : 1.0; }
   double pair_power(const NodalState& nodes, std::size_t slot, V3 f, Index seg,
                     const std::array<double, 4>& w) const;
@@ -184,9 +187,6 @@ class PenaltyContact {
   ContactResultant resultant_;
 
   // Last cycle's force on each secondary node, its segment and weights (work update).
-  // Penalty stiffness kp and its cap kmax of secondary slot i against segment seg (Istf,
-  // Stfac, Stmin, Stmax and the fixed-step cap of the node's mass).
-  std::pair<double, double> pair_stiffness(const NodalState& nodes, std::size_t i, Index seg) const;
   std::vector<V3> prev_force_;
   std::vector<Index> prev_segment_;
   std::vector<double> prev_pen_;       // penetration of the last cycle (0: not in contact)
