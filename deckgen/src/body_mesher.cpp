@@ -53,6 +53,12 @@ namespace {
 // surface), est; torso nodes within it join the femur rigid body.
 constexpr double kTrochanterBone = 30.0;
 
+// A point at the trochanter's bone: within kTrochanterBone of the landmark gt and not lateral
+// of it (the tissue lateral of the landmark stays deformable).
+bool at_trochanter_bone(const Eigen::Vector3d& x, const Eigen::Vector3d& gt) {
+  return (x - gt).norm() <= kTrochanterBone && std::abs(x.y()) <= std::abs(gt.y());
+}
+
 constexpr double kDensity = 1e-9;  // kg/m^3 -> kg/mm^3
 constexpr double kModulus = 1e-3;  // MPa -> GPa
 constexpr double kRate = 1e-3;     // 1/s -> 1/ms
@@ -123,20 +129,6 @@ class Builder {
     p.region = region;
     p.thickness = thickness;
     return m_.add_part(p);
-  }
-  // Flags of the nodes that some element uses.
-  std::vector<char> element_nodes() const {
-    std::vector<char> in(m_.nodes.size(), 0);
-    auto mark = [&](const auto& els) {
-      for (const auto& e : els)
-        for (int n : e) in[static_cast<std::size_t>(n)] = 1;
-    };
-    mark(m_.bricks);
-    mark(m_.tetras);
-    mark(m_.shells);
-    mark(m_.trias);
-    mark(m_.springs);
-    return in;
   }
   void brick(int part_index, const std::array<int, 8>& h) {
     m_.bricks.push_back(h);
@@ -511,8 +503,7 @@ void Builder::build_tetra_flesh(const std::map<std::string, int>& flesh, const s
       for (int lv : {l0, l1 + 1})
         for (int j = 0; j < N; ++j) {
           int n = torso_->ring_node(lv, 2, j);
-          const Eigen::Vector3d& x = m_.nodes[static_cast<std::size_t>(n)];
-          if ((x - gt).norm() <= kTrochanterBone && std::abs(x.y()) <= std::abs(gt.y())) at_trochanter.insert(n);
+          if (at_trochanter_bone(m_.nodes[static_cast<std::size_t>(n)], gt)) at_trochanter.insert(n);
         }
   }
   // Kuhn's six tetras around the diagonal n1-n7: every face of the cell is cut along its
@@ -752,7 +743,9 @@ void Builder::build_pelvis() {
     jm.source += src.str();
   }
   // Rigid acetabula (pelvis shell nodes within 40 mm of the acetabular centre) with the hip
-  // joint centre as main node; rigid greater trochanter nodes join the femur rigid body.
+  // joint centre as main node; rigid greater trochanter nodes join the femur rigid body
+  // (nodes of elements only: not the fine grid's nodes the tetra flesh leaves out).
+  const std::vector<char> in_element = m_.nodes_in_elements();
   for (const char* s : {"r", "l"}) {
     std::string side = s;
     Eigen::Vector3d ac = g_.pelvis.at("acetabulum_" + side);
@@ -779,12 +772,9 @@ void Builder::build_pelvis() {
     for (const auto& q : torso_skin_) skin_nodes.insert(q.begin(), q.end());
     std::vector<int> troch;
     Eigen::Vector3d gt = g_.pelvis.at("greater_trochanter_" + side);
-    const std::vector<char> in_element = element_nodes();  // not the fine grid's nodes the tetra flesh leaves out
-    for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n) {
-      const Eigen::Vector3d& x = m_.nodes[static_cast<std::size_t>(n)];
-      bool medial = std::abs(x.y()) <= std::abs(gt.y());  // at the bone, not in the tissue lateral of it
-      if ((x - gt).norm() <= kTrochanterBone && medial && !rigid_of_.count(n) && in_element[static_cast<std::size_t>(n)]) troch.push_back(n);
-    }
+    for (int n = 0; n < static_cast<int>(m_.nodes.size()); ++n)
+      if (at_trochanter_bone(m_.nodes[static_cast<std::size_t>(n)], gt) && !rigid_of_.count(n) && in_element[static_cast<std::size_t>(n)])
+        troch.push_back(n);
     if (troch.empty())
       throw std::runtime_error("pelvis: no torso node within " + std::to_string(kTrochanterBone) + " mm of greater_trochanter_" + side +
                                " (pelvis_landmarks.csv)");

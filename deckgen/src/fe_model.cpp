@@ -41,14 +41,23 @@ int FeModel::find_part(const std::string& name) const {
   return -1;
 }
 
+std::vector<char> FeModel::nodes_in_elements() const {
+  std::vector<char> in(nodes.size(), 0);
+  auto mark = [&](const auto& elements) {
+    for (const auto& e : elements)
+      for (int n : e) in[static_cast<std::size_t>(n)] = 1;
+  };
+  mark(bricks);
+  mark(tetras);
+  mark(shells);
+  mark(trias);
+  mark(springs);
+  return in;
+}
+
 std::size_t FeModel::remove_unreferenced_nodes() {
-  std::vector<char> used(nodes.size(), 0);
+  std::vector<char> used = nodes_in_elements();
   auto mark = [&](int n) { used[static_cast<std::size_t>(n)] = 1; };
-  for (const auto& e : bricks) for (int n : e) mark(n);
-  for (const auto& e : tetras) for (int n : e) mark(n);
-  for (const auto& e : shells) for (int n : e) mark(n);
-  for (const auto& e : trias) for (int n : e) mark(n);
-  for (const auto& e : springs) for (int n : e) mark(n);
   for (const auto& r : rigid_bodies) {
     mark(r.main_node);
     for (int n : r.nodes) mark(n);

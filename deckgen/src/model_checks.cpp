@@ -55,16 +55,26 @@ double tet_volume(const FeModel& m, const std::array<int, 4>& t) {
   return (X(m, t[1]) - a).dot((X(m, t[2]) - a).cross(X(m, t[3]) - a)) / 6;
 }
 
-// Smallest altitude 3 V / A_max of a tetra (its characteristic length for the step) and
-// longest edge.
-std::pair<double, double> tet_altitude_and_edge(const FeModel& m, const std::array<int, 4>& t) {
+// A tetra's smallest altitude 3 V / A_max (its characteristic length for the step) and its
+// shortest and longest edges.
+struct TetraShape {
+  double altitude = 0, edge_min = 0, edge_max = 0;
+};
+TetraShape tetra_shape(const FeModel& m, const std::array<int, 4>& t) {
   static constexpr int kTetFaces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-  double amax = 0, lmax = 0;
-  for (const auto& f : kTetFaces)
-    amax = std::max(amax, tri_area(X(m, t[static_cast<std::size_t>(f[0])]), X(m, t[static_cast<std::size_t>(f[1])]), X(m, t[static_cast<std::size_t>(f[2])])));
+  auto P = [&](int k) { return X(m, t[static_cast<std::size_t>(k)]); };
+  double amax = 0;
+  for (const auto& f : kTetFaces) amax = std::max(amax, tri_area(P(f[0]), P(f[1]), P(f[2])));
+  TetraShape r;
+  r.edge_min = 1e300;
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) lmax = std::max(lmax, (X(m, t[static_cast<std::size_t>(i)]) - X(m, t[static_cast<std::size_t>(j)])).norm());
-  return {amax > 0 ? 3 * tet_volume(m, t) / amax : 0.0, lmax};
+    for (int j = i + 1; j < 4; ++j) {
+      const double l = (P(i) - P(j)).norm();
+      r.edge_min = std::min(r.edge_min, l);
+      r.edge_max = std::max(r.edge_max, l);
+    }
+  r.altitude = amax > 0 ? 3 * tet_volume(m, t) / amax : 0.0;
+  return r;
 }
 
 double hex_char_length(const FeModel& m, const std::array<int, 8>& h) {
@@ -329,7 +339,7 @@ TimeStepReport time_step_check(const FeModel& m, double tsca, double tmin) {
   }
   for (std::size_t e = 0; e < m.tetras.size(); ++e) {
     int p = m.tetra_part[e];
-    element(p, m.tetras[e].data(), 4, tet_altitude_and_edge(m, m.tetras[e]).first, mat_of(m, p).solid_wave_speed(),
+    element(p, m.tetras[e].data(), 4, tetra_shape(m, m.tetras[e]).altitude, mat_of(m, p).solid_wave_speed(),
             element_mass(m, ElementKind::Tetra, e));
   }
   for (std::size_t e = 0; e < m.shells.size(); ++e) {
@@ -412,11 +422,9 @@ std::vector<QualityRow> quality_check(const FeModel& m, const QualityLimits& lim
     if (row.kind == "BRICK" && row.elements == 0) row.kind = "TETRA4";
     else if (row.kind == "BRICK") row.kind = "BRICK+TETRA4";
     const auto& t = m.tetras[e];
-    auto [h, lmax] = tet_altitude_and_edge(m, t);
-    double lmin = 1e300;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) lmin = std::min(lmin, (X(m, t[static_cast<std::size_t>(i)]) - X(m, t[static_cast<std::size_t>(j)])).norm());
-    double ar = h > 0 ? lmax / h : 1e30;
+    const TetraShape sh = tetra_shape(m, t);
+    const double h = sh.altitude, lmin = sh.edge_min;
+    const double ar = h > 0 ? sh.edge_max / h : 1e30;
     row.elements++;
     if (h <= 0) row.inverted++;
     row.aspect_max = std::max(row.aspect_max, ar);

@@ -102,6 +102,8 @@ struct FeModel {
   int find_part(const std::string& name) const;
   int find_material(const std::string& name) const;
   std::size_t element_count() const { return bricks.size() + tetras.size() + shells.size() + trias.size() + springs.size(); }
+  // Flags (1) of the nodes some element uses.
+  std::vector<char> nodes_in_elements() const;
   // Drops the nodes no element, rigid body or interface refers to and renumbers the rest
   // in their order; returns how many were dropped.
   std::size_t remove_unreferenced_nodes();
