@@ -15,7 +15,7 @@ deck = sys.argv[1] if len(sys.argv) > 1 else "decks/hbm50/hbm50.inc"
 out = sys.argv[2] if len(sys.argv) > 2 else "docs/images/hbm50_model.png"
 
 nodes, parts, shells = {}, {}, []
-n_elements = 0  # every element of the deck (bricks, shells, triangles, springs), for the title
+n_elements = 0  # every element of the deck (bricks, tetras, shells, triangles, springs), for the title
 mode, part, title_next = None, None, False
 with open(deck) as f:
     for line in f:
@@ -28,7 +28,7 @@ with open(deck) as f:
                 part = int(kw[2]); title_next = True; mode = 'PART'
             elif line.startswith('/SHELL/') or line.startswith('/SH3N/'):
                 part = int(kw[2]); mode = 'ELEM'
-            elif line.startswith('/BRICK/') or line.startswith('/SPRING/'):
+            elif line.startswith(('/BRICK/', '/TETRA4/', '/SPRING/')):
                 mode = 'OTHER'
             elif line.startswith('/NODE'):
                 mode = 'NODE'
