@@ -66,10 +66,6 @@ class PhaseTimer {
 // fixed chunks).
 constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
 
-// Element groups with fewer chunks than this run on one thread inside their own
-// compute_forces (as the solid and shell groups decide); several of them then run side
-// by side, one group per thread, in one parallel region per cycle.
-constexpr std::size_t kSmallGroupChunks = 8;
 
 
 int max_threads() {
@@ -119,46 +115,95 @@ double GlobalEnergies::energy_error() const {
 }
 
 // Each group: slot forces f_e = -f_int + hourglass + viscous at t^n from x^n, v^{n-1/2}.
-// Large groups run one after the other, each parallel over its own chunks; small groups
-// (one thread each inside) are shared out between the threads in one parallel region.
-// A group's results never depend on which thread ran it.
+// One parallel loop per cycle over work items: the chunks of every group that splits
+// into chunks (ElementGroup::force_chunks) and each other group whole, largest first,
+// handed out one at a time (dynamic schedule), so that the threads finish together. (One
+// region per large group and one for the small ones, before 2026-11-24, left the second
+// thread waiting at each region's end; giving each thread the same items every cycle,
+// balanced by measured cost, was no faster: docs/engine-design.md section 14.5.) A
+// group's begin_forces runs before and its end_forces after the loop, in group order;
+// every chunk writes its own slots and partials, so the results never depend on which
+// thread ran what.
+namespace {
+
+void build_force_items(const Model& m, std::vector<ForceItem>& items) {
+  items.clear();
+  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    const ElementGroup& grp = *m.groups[g];
+    // All elements inside rigid bodies: slots stay zero, nothing to compute.
+    if (grp.all_deactivated()) continue;
+    const std::size_t nch = grp.force_chunks();
+    const std::size_t live = grp.n_elements - grp.n_deactivated;
+    if (nch == 0) {
+      items.push_back({g, ForceItem::kWholeGroup, live});
+      continue;
+    }
+    for (std::size_t ch = 0; ch < nch; ++ch)
+      items.push_back({g, ch, std::min(kChunk, live - std::min(live, ch * kChunk))});
+  }
+  // Largest first (then group and chunk order, so the list is the same on every run).
+  std::stable_sort(items.begin(), items.end(),
+                   [](const ForceItem& x, const ForceItem& y) { return x.elements > y.elements; });
+}
+
+}  // namespace
+
 void compute_element_forces(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   const std::size_t ng = m.groups.size();
   c.group_results.assign(ng, GroupStepResult{});
   if (c.group_seconds.size() != ng) c.group_seconds.assign(ng, 0.0);
   if (c.group_cpu_seconds.size() != ng) c.group_cpu_seconds.assign(ng, 0.0);
-  // The thread CPU clock is a system call (about 0.5 us): per group it is read on one
+  if (c.force_items_groups != ng) {
+    build_force_items(m, c.force_items);
+    c.force_items_groups = ng;
+  }
+  const std::vector<ForceItem>& items = c.force_items;
+  // The thread CPU clock is a system call (about 0.5 us): per item it is read on one
   // cycle in kCpuSampleCycles only and scaled (the wall clock is read every cycle).
   const bool sample_cpu = c.step.cycle % kCpuSampleCycles == 0;
-  auto run_group = [&](std::size_t g) {
+  for (std::size_t g = 0; g < ng; ++g) {
+    ElementGroup& grp = *m.groups[g];
+    if (grp.all_deactivated() || grp.force_chunks() == 0) continue;
+    const auto w0 = Clock::now();
+    grp.begin_forces(c.step, m.nodes);
+    c.group_seconds[g] += seconds_since(w0);
+  }
+  c.item_seconds.assign(items.size(), 0.0);
+  c.item_cpu_seconds.assign(items.size(), 0.0);
+  auto run_item = [&](std::size_t i) {
+    const ForceItem& it = items[i];
     const auto w0 = Clock::now();
     const double cpu0 = sample_cpu ? thread_cpu_seconds() : 0.0;
-    m.groups[g]->compute_forces(c.step, m.nodes, c.group_results[g]);
-    c.group_seconds[g] += seconds_since(w0);
-    if (sample_cpu) c.group_cpu_seconds[g] += kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
-  };
-  const bool share_small = max_threads() > 1;
-  std::vector<std::size_t>& small = c.small_groups;
-  small.clear();
-  for (std::size_t g = 0; g < ng; ++g) {
-    // All elements inside rigid bodies: slots stay zero, nothing to compute.
-    if (m.groups[g]->all_deactivated()) continue;
-    if (share_small && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks)
-      small.push_back(g);
+    ElementGroup& grp = *m.groups[it.group];
+    if (it.chunk == ForceItem::kWholeGroup)
+      grp.compute_forces(c.step, m.nodes, c.group_results[it.group]);
     else
-      run_group(g);
-  }
-  if (!small.empty()) {
+      grp.compute_force_chunk(it.chunk, c.step, m.nodes);
+    c.item_seconds[i] = seconds_since(w0);
+    if (sample_cpu) c.item_cpu_seconds[i] = kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
+  };
+  if (max_threads() > 1 && items.size() > 1) {
 #ifdef _OPENMP
-    // Nested regions inside a group run on the calling thread.
+    // Regions inside a whole group run on the calling thread.
     omp_set_max_active_levels(1);
 #endif
-#pragma omp parallel for schedule(dynamic, 1) if (small.size() > 1)
-    for (std::size_t k = 0; k < small.size(); ++k) run_group(small[k]);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::size_t i = 0; i < items.size(); ++i) run_item(i);
+  } else {
+    for (std::size_t i = 0; i < items.size(); ++i) run_item(i);
+  }
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    c.group_seconds[items[i].group] += c.item_seconds[i];
+    c.group_cpu_seconds[items[i].group] += c.item_cpu_seconds[i];
   }
   for (std::size_t g = 0; g < ng; ++g) {
     ElementGroup& grp = *m.groups[g];
+    if (!grp.all_deactivated() && grp.force_chunks() > 0) {
+      const auto w0 = Clock::now();
+      grp.end_forces(c.group_results[g]);
+      c.group_seconds[g] += seconds_since(w0);
+    }
     for (Index e : grp.newly_eroded) {
       const Part& p = m.parts[static_cast<std::size_t>(grp.part)];
       c.events.push_back("element " + std::to_string(grp.element_id[static_cast<std::size_t>(e)]) +

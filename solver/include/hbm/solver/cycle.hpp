@@ -58,6 +58,14 @@ struct AssemblyPlan {
 // Why a cycle asks the loop to stop (None = keep going).
 enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass, EnergyError };
 
+// One work item of the element forces: chunk `chunk` of a group that splits into chunks,
+// or (kWholeGroup) a group computed whole by its compute_forces.
+struct ForceItem {
+  static constexpr std::size_t kWholeGroup = static_cast<std::size_t>(-1);
+  std::size_t group = 0, chunk = kWholeGroup;
+  std::size_t elements = 0;  // elements it computes (the largest items are handed out first)
+};
+
 struct CycleState {
   StepContext step;
   double dt_mid = 0.0;  // dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2, the velocity-update step
@@ -77,7 +85,10 @@ struct CycleState {
   std::vector<double> group_cpu_seconds;
   AssemblyPlan assembly;
   std::vector<SlotPointers> slot_pointers;  // per group, refreshed every cycle
-  std::vector<std::size_t> small_groups;    // groups shared out between threads
+  // Work items of the element forces (compute_element_forces), built on the first cycle.
+  std::vector<ForceItem> force_items;
+  std::size_t force_items_groups = static_cast<std::size_t>(-1);  // group count they were built for
+  std::vector<double> item_seconds, item_cpu_seconds;              // per item, this cycle
   // Where /DT/NODA/CST put mass: per group, per element (allocated on first use) [mass].
   std::vector<std::vector<double>> element_added_mass;
   std::vector<std::string> events;  // element deletions etc., printed by the run loop
