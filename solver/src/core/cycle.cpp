@@ -65,6 +65,9 @@ class PhaseTimer {
 // this size; results do not depend on it (every node is computed alone, sums use
 // fixed chunks).
 constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
+// The assembly (about 2 ns per slot, 6 slots per node) is worth a region from a few
+// thousand nodes: each thread scatters the slots of its own node range (AssemblyPlan).
+constexpr std::size_t kParallelAssemblyNodes = 4096;
 
 
 
@@ -215,40 +218,51 @@ void compute_element_forces(Model& m, CycleState& c) {
   t0.stop(c.times.element_forces, c.cpu_times.element_forces);
 }
 
-bool AssemblyPlan::built_for(const Model& m) const {
-  return n_groups == m.groups.size() && start.size() == m.incidence_start.size() &&
-         n_incidence == m.incidence_slot.size();
+bool AssemblyPlan::built_for(const Model& m, std::size_t n_parts) const {
+  return parts == n_parts && n_groups == m.groups.size() && n_nodes == m.nodes.n_nodes;
 }
 
-void AssemblyPlan::build(const Model& m) {
-  const std::size_t nn = m.incidence_start.empty() ? 0 : m.incidence_start.size() - 1;
-  n_groups = m.groups.size();
-  n_incidence = m.incidence_slot.size();
-  start.assign(nn + 1, 0);
-  rot_start.assign(nn + 1, 0);
-  entries.clear();
-  rot_entries.clear();
-  entries.reserve(m.incidence_slot.size());
-  for (std::size_t i = 0; i < nn; ++i) {
-    for (std::int64_t j = m.incidence_start[i]; j < m.incidence_start[i + 1]; ++j) {
-      const Entry e{static_cast<std::uint32_t>(m.incidence_group[static_cast<std::size_t>(j)]),
-                    static_cast<std::uint32_t>(m.incidence_slot[static_cast<std::size_t>(j)])};
-      if (m.groups[e.group]->all_deactivated()) continue;  // zero slots
-      entries.push_back(e);
-      if (m.groups[e.group]->has_rotation_slots()) rot_entries.push_back(e);
-    }
-    start[i + 1] = static_cast<std::uint32_t>(entries.size());
-    rot_start[i + 1] = static_cast<std::uint32_t>(rot_entries.size());
+void AssemblyPlan::build(const Model& m, std::size_t n_parts) {
+  const std::size_t nn = m.nodes.n_nodes, ng = m.groups.size();
+  parts = n_parts;
+  n_groups = ng;
+  n_nodes = nn;
+  // Node ranges of about equal slot counts.
+  std::vector<std::size_t> per_node(nn, 0);
+  std::size_t total = 0;
+  for (const auto& gp : m.groups) {
+    if (gp->all_deactivated()) continue;
+    for (Index i : gp->connectivity) ++per_node[static_cast<std::size_t>(i)];
+    total += gp->connectivity.size();
   }
+  node_begin.assign(parts + 1, nn);
+  node_begin[0] = 0;
+  std::size_t acc = 0, p = 1;
+  for (std::size_t i = 0; i < nn && p < parts; ++i) {
+    acc += per_node[i];
+    while (p < parts && acc * parts >= p * total) node_begin[p++] = i + 1;
+  }
+  start.assign(parts * ng + 1, 0);
+  entries.clear();
+  entries.reserve(total);
+  for (std::size_t q = 0; q < parts; ++q)
+    for (std::size_t g = 0; g < ng; ++g) {
+      const ElementGroup& grp = *m.groups[g];
+      if (!grp.all_deactivated())
+        for (std::size_t s = 0; s < grp.connectivity.size(); ++s) {
+          const auto i = static_cast<std::size_t>(grp.connectivity[s]);
+          if (i >= node_begin[q] && i < node_begin[q + 1])
+            entries.push_back({static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(i)});
+        }
+      start[q * ng + g + 1] = entries.size();
+    }
 }
 
 // f_i = sum over the slots of node i in (group, element) order; same for M_i, k_n, k_r.
-// One thread: scatter, group after group, slot after slot: the slot buffers are read
-// in memory order and the nodal arrays stay in cache; each node receives its slots in
-// (group, element) order, the order of the gather, so the sums are the same bits.
-// Several threads (large models): node-ordered gather through the packed plan (each
-// node summed by one thread). Groups whose elements all lie inside rigid bodies (zero
-// slots) are left out of both.
+// One thread: a scatter, group after group, slot after slot: the slot buffers are read
+// in memory order and the nodal arrays stay in cache. Several threads: the same scatter,
+// each thread over the slots of its own node range (AssemblyPlan). Groups whose elements
+// all lie inside rigid bodies (zero slots) are skipped.
 void assemble_nodal_forces(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
@@ -261,7 +275,8 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
   double* __restrict myo = n.moment.y.data();
   double* __restrict mzo = n.moment.z.data();
   double* __restrict kro = n.rot_stiffness.data();
-  if (nn < kParallelNodes || max_threads() == 1) {
+  const auto threads = static_cast<std::size_t>(max_threads());
+  if (nn < kParallelAssemblyNodes || threads == 1) {
     for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a, a + nn, 0.0);
     for (const auto& gp : m.groups) {
       const ElementGroup& g = *gp;
@@ -290,49 +305,34 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
     }
   } else {
     AssemblyPlan& plan = c.assembly;
-    if (!plan.built_for(m)) plan.build(m);
-    // Slot buffers of every group (stable within a cycle).
-    auto& ptr = c.slot_pointers;
-    ptr.resize(m.groups.size());
-    for (std::size_t g = 0; g < m.groups.size(); ++g) {
-      const ElementGroup& grp = *m.groups[g];
-      ptr[g] = {grp.slot_force.x.data(), grp.slot_force.y.data(), grp.slot_force.z.data(),
-                grp.slot_stiffness.data(), grp.slot_moment.x.data(), grp.slot_moment.y.data(),
-                grp.slot_moment.z.data(), grp.slot_rot_stiffness.data()};
-    }
-    const SlotPointers* P = ptr.data();
-    const std::uint32_t* start = plan.start.data();
-    const AssemblyPlan::Entry* ent = plan.entries.data();
-    const std::uint32_t* rstart = plan.rot_start.data();
-    const AssemblyPlan::Entry* rent = plan.rot_entries.data();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nn; ++i) {
-      double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0;
-      for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
-        const SlotPointers& p = P[ent[j].group];
-        const std::uint32_t s = ent[j].slot;
-        fx += p.fx[s];
-        fy += p.fy[s];
-        fz += p.fz[s];
-        k += p.k[s];
+    if (!plan.built_for(m, threads)) plan.build(m, threads);
+    const std::size_t ng = m.groups.size();
+#pragma omp parallel for schedule(static, 1)
+    for (std::size_t q = 0; q < plan.parts; ++q) {
+      const std::size_t b = plan.node_begin[q], e = plan.node_begin[q + 1];
+      for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a + b, a + e, 0.0);
+      for (std::size_t g = 0; g < ng; ++g) {
+        const ElementGroup& grp = *m.groups[g];
+        const AssemblyPlan::Entry* it = plan.entries.data() + plan.start[q * ng + g];
+        const AssemblyPlan::Entry* end = plan.entries.data() + plan.start[q * ng + g + 1];
+        const double *gfx = grp.slot_force.x.data(), *gfy = grp.slot_force.y.data(),
+                     *gfz = grp.slot_force.z.data(), *gk = grp.slot_stiffness.data();
+        for (const AssemblyPlan::Entry* p = it; p != end; ++p) {
+          fxo[p->node] += gfx[p->slot];
+          fyo[p->node] += gfy[p->slot];
+          fzo[p->node] += gfz[p->slot];
+          ko[p->node] += gk[p->slot];
+        }
+        if (!grp.has_rotation_slots()) continue;
+        const double *gmx = grp.slot_moment.x.data(), *gmy = grp.slot_moment.y.data(),
+                     *gmz = grp.slot_moment.z.data(), *gkr = grp.slot_rot_stiffness.data();
+        for (const AssemblyPlan::Entry* p = it; p != end; ++p) {
+          mxo[p->node] += gmx[p->slot];
+          myo[p->node] += gmy[p->slot];
+          mzo[p->node] += gmz[p->slot];
+          kro[p->node] += gkr[p->slot];
+        }
       }
-      fxo[i] = fx;
-      fyo[i] = fy;
-      fzo[i] = fz;
-      ko[i] = k;
-      double mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
-      for (std::uint32_t j = rstart[i]; j < rstart[i + 1]; ++j) {
-        const SlotPointers& p = P[rent[j].group];
-        const std::uint32_t s = rent[j].slot;
-        mx += p.mx[s];
-        my += p.my[s];
-        mz += p.mz[s];
-        kr += p.kr[s];
-      }
-      mxo[i] = mx;
-      myo[i] = my;
-      mzo[i] = mz;
-      kro[i] = kr;
     }
   }
   for (Vec3Soa* v : {&n.force_ext, &n.contact_force}) {

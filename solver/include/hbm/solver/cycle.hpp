@@ -30,29 +30,22 @@ struct PhaseTimes {
          time_step = 0, nodal_update = 0, energies = 0, output = 0;
 };
 
-// The slot buffers of one group for the assembly (moment pointers null without
-// rotational DOFs).
-struct SlotPointers {
-  const double *fx, *fy, *fz, *k, *mx, *my, *mz, *kr;
-};
-
-// Node-ordered gather plan of the assembly, derived from Model::incidence_* on the
-// first cycle: entry (group, slot) packed in 8 bytes, and a second CSR that lists only
-// the slots of groups with rotational DOFs (moments, k_r), so that the many nodes of
-// translational elements read no moment slots.
+// Assembly on several threads: the nodes split into one contiguous range per thread, each
+// receiving about the same number of slots; per range and group the (slot, node) pairs of
+// the slots whose node lies in the range, in slot order. Each thread scatters its range's
+// pairs group after group, so every node receives its slots in (group, element) order,
+// as on one thread: the same bits for any thread count. Groups whose elements all lie in
+// rigid bodies (zero slots) are left out.
 struct AssemblyPlan {
   struct Entry {
-    std::uint32_t group, slot;
+    std::uint32_t slot, node;
   };
-  std::vector<std::uint32_t> start;      // n_nodes + 1, all slots of node i
+  std::size_t parts = 0, n_groups = 0, n_nodes = 0;
+  std::vector<std::size_t> node_begin;  // parts + 1: node range of each part
+  std::vector<std::size_t> start;       // parts * n_groups + 1: entries of (part, group)
   std::vector<Entry> entries;
-  std::vector<std::uint32_t> rot_start;  // n_nodes + 1, rotational slots of node i
-  std::vector<Entry> rot_entries;
-  std::size_t n_groups = 0;
-  std::size_t n_incidence = 0;  // incidence entries it was built from (slots of groups
-                                // whose elements are all deactivated are left out)
-  bool built_for(const Model& m) const;
-  void build(const Model& m);
+  bool built_for(const Model& m, std::size_t n_parts) const;
+  void build(const Model& m, std::size_t n_parts);
 };
 
 // Why a cycle asks the loop to stop (None = keep going).
@@ -84,7 +77,6 @@ struct CycleState {
   // and scaled (an estimate; the clock is a system call) [s].
   std::vector<double> group_cpu_seconds;
   AssemblyPlan assembly;
-  std::vector<SlotPointers> slot_pointers;  // per group, refreshed every cycle
   // Work items of the element forces (compute_element_forces), built on the first cycle.
   std::vector<ForceItem> force_items;
   std::size_t force_items_groups = static_cast<std::size_t>(-1);  // group count they were built for
