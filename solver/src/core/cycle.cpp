@@ -258,6 +258,23 @@ void AssemblyPlan::build(const Model& m, std::size_t n_parts) {
     }
 }
 
+// body(begin, end) over the nodes: on several threads (from kParallelAssemblyNodes nodes)
+// one call per node range of the assembly plan, so that each thread updates the nodes
+// whose forces it has just summed (they are in its core's cache); else one call.
+template <class Body>
+void for_node_ranges(const Model& m, CycleState& c, Body&& body) {
+  const std::size_t nn = m.nodes.n_nodes;
+  const auto threads = static_cast<std::size_t>(max_threads());
+  if (nn < kParallelAssemblyNodes || threads == 1) {
+    body(std::size_t{0}, nn);
+    return;
+  }
+  AssemblyPlan& plan = c.assembly;
+  if (!plan.built_for(m, threads)) plan.build(m, threads);
+#pragma omp parallel for schedule(static, 1)
+  for (std::size_t q = 0; q < plan.parts; ++q) body(plan.node_begin[q], plan.node_begin[q + 1]);
+}
+
 // f_i = sum over the slots of node i in (group, element) order; same for M_i, k_n, k_r.
 // One thread: a scatter, group after group, slot after slot: the slot buffers are read
 // in memory order and the nodal arrays stay in cache. Several threads: the same scatter,
@@ -425,25 +442,26 @@ void update_velocities(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.dt_mid;
-  const std::size_t nn = n.n_nodes;
-  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
-    if (n.is_secondary[i] || !(n.mass[i] > 0.0)) return;
-    const double inv_m = 1.0 / n.mass[i];
-    const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
-    n.a.x[i] = ax;
-    n.a.y[i] = ay;
-    n.a.z[i] = az;
-    n.v.x[i] += dt * ax;
-    n.v.y[i] += dt * ay;
-    n.v.z[i] += dt * az;
+  for_node_ranges(m, c, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      if (n.is_secondary[i] || !(n.mass[i] > 0.0)) continue;
+      const double inv_m = 1.0 / n.mass[i];
+      const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
+      n.a.x[i] = ax;
+      n.a.y[i] = ay;
+      n.a.z[i] = az;
+      n.v.x[i] += dt * ax;
+      n.v.y[i] += dt * ay;
+      n.v.z[i] += dt * az;
+    }
+    for (std::size_t i = b; i < e; ++i) {
+      if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
+      const double inv = 1.0 / n.inertia[i];
+      n.omega.x[i] += dt * n.moment.x[i] * inv;
+      n.omega.y[i] += dt * n.moment.y[i] * inv;
+      n.omega.z[i] += dt * n.moment.z[i] * inv;
+    }
   });
-  for (std::size_t i = 0; i < nn; ++i) {
-    if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
-    const double inv = 1.0 / n.inertia[i];
-    n.omega.x[i] += dt * n.moment.x[i] * inv;
-    n.omega.y[i] += dt * n.moment.y[i] * inv;
-    n.omega.z[i] += dt * n.moment.z[i] * inv;
-  }
   t0.stop(c.times.nodal_update, c.cpu_times.nodal_update);
 }
 
@@ -519,11 +537,12 @@ void update_positions(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.step.dt_next;
-  const std::size_t nn = n.n_nodes;
-  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
-    n.x.x[i] += dt * n.v.x[i];
-    n.x.y[i] += dt * n.v.y[i];
-    n.x.z[i] += dt * n.v.z[i];
+  for_node_ranges(m, c, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      n.x.x[i] += dt * n.v.x[i];
+      n.x.y[i] += dt * n.v.y[i];
+      n.x.z[i] += dt * n.v.z[i];
+    }
   });
   c.step.time += dt;
   c.step.dt_prev = dt;
