@@ -65,10 +65,11 @@ class PhaseTimer {
 // this size; results do not depend on it (every node is computed alone, sums use
 // fixed chunks).
 constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
-// The assembly (about 2 ns per slot, 6 slots per node) is worth a region from a few
-// thousand nodes: each thread scatters the slots of its own node range (AssemblyPlan).
-constexpr std::size_t kParallelAssemblyNodes = 4096;
 
+// Element groups with fewer chunks than this run on one thread inside their own
+// compute_forces (as the solid and shell groups decide); several of them then run side
+// by side, one group per thread, in one parallel region per cycle.
+constexpr std::size_t kSmallGroupChunks = 8;
 
 
 int max_threads() {
@@ -118,95 +119,46 @@ double GlobalEnergies::energy_error() const {
 }
 
 // Each group: slot forces f_e = -f_int + hourglass + viscous at t^n from x^n, v^{n-1/2}.
-// One parallel loop per cycle over work items: the chunks of every group that splits
-// into chunks (ElementGroup::force_chunks) and each other group whole, largest first,
-// handed out one at a time (dynamic schedule), so that the threads finish together. (One
-// region per large group and one for the small ones, before 2026-11-24, left the second
-// thread waiting at each region's end; giving each thread the same items every cycle,
-// balanced by measured cost, was no faster: docs/engine-design.md section 14.5.) A
-// group's begin_forces runs before and its end_forces after the loop, in group order;
-// every chunk writes its own slots and partials, so the results never depend on which
-// thread ran what.
-namespace {
-
-void build_force_items(const Model& m, std::vector<ForceItem>& items) {
-  items.clear();
-  for (std::size_t g = 0; g < m.groups.size(); ++g) {
-    const ElementGroup& grp = *m.groups[g];
-    // All elements inside rigid bodies: slots stay zero, nothing to compute.
-    if (grp.all_deactivated()) continue;
-    const std::size_t nch = grp.force_chunks();
-    const std::size_t live = grp.n_elements - grp.n_deactivated;
-    if (nch == 0) {
-      items.push_back({g, ForceItem::kWholeGroup, live});
-      continue;
-    }
-    for (std::size_t ch = 0; ch < nch; ++ch)
-      items.push_back({g, ch, std::min(kChunk, live - std::min(live, ch * kChunk))});
-  }
-  // Largest first (then group and chunk order, so the list is the same on every run).
-  std::stable_sort(items.begin(), items.end(),
-                   [](const ForceItem& x, const ForceItem& y) { return x.elements > y.elements; });
-}
-
-}  // namespace
-
+// Large groups run one after the other, each parallel over its own chunks; small groups
+// (one thread each inside) are shared out between the threads in one parallel region.
+// A group's results never depend on which thread ran it.
 void compute_element_forces(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   const std::size_t ng = m.groups.size();
   c.group_results.assign(ng, GroupStepResult{});
   if (c.group_seconds.size() != ng) c.group_seconds.assign(ng, 0.0);
   if (c.group_cpu_seconds.size() != ng) c.group_cpu_seconds.assign(ng, 0.0);
-  if (c.force_items_groups != ng) {
-    build_force_items(m, c.force_items);
-    c.force_items_groups = ng;
-  }
-  const std::vector<ForceItem>& items = c.force_items;
-  // The thread CPU clock is a system call (about 0.5 us): per item it is read on one
+  // The thread CPU clock is a system call (about 0.5 us): per group it is read on one
   // cycle in kCpuSampleCycles only and scaled (the wall clock is read every cycle).
   const bool sample_cpu = c.step.cycle % kCpuSampleCycles == 0;
-  for (std::size_t g = 0; g < ng; ++g) {
-    ElementGroup& grp = *m.groups[g];
-    if (grp.all_deactivated() || grp.force_chunks() == 0) continue;
-    const auto w0 = Clock::now();
-    grp.begin_forces(c.step, m.nodes);
-    c.group_seconds[g] += seconds_since(w0);
-  }
-  c.item_seconds.assign(items.size(), 0.0);
-  c.item_cpu_seconds.assign(items.size(), 0.0);
-  auto run_item = [&](std::size_t i) {
-    const ForceItem& it = items[i];
+  auto run_group = [&](std::size_t g) {
     const auto w0 = Clock::now();
     const double cpu0 = sample_cpu ? thread_cpu_seconds() : 0.0;
-    ElementGroup& grp = *m.groups[it.group];
-    if (it.chunk == ForceItem::kWholeGroup)
-      grp.compute_forces(c.step, m.nodes, c.group_results[it.group]);
-    else
-      grp.compute_force_chunk(it.chunk, c.step, m.nodes);
-    c.item_seconds[i] = seconds_since(w0);
-    if (sample_cpu) c.item_cpu_seconds[i] = kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
+    m.groups[g]->compute_forces(c.step, m.nodes, c.group_results[g]);
+    c.group_seconds[g] += seconds_since(w0);
+    if (sample_cpu) c.group_cpu_seconds[g] += kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
   };
-  if (max_threads() > 1 && items.size() > 1) {
+  const bool share_small = max_threads() > 1;
+  std::vector<std::size_t>& small = c.small_groups;
+  small.clear();
+  for (std::size_t g = 0; g < ng; ++g) {
+    // All elements inside rigid bodies: slots stay zero, nothing to compute.
+    if (m.groups[g]->all_deactivated()) continue;
+    if (share_small && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks)
+      small.push_back(g);
+    else
+      run_group(g);
+  }
+  if (!small.empty()) {
 #ifdef _OPENMP
-    // Regions inside a whole group run on the calling thread.
+    // Nested regions inside a group run on the calling thread.
     omp_set_max_active_levels(1);
 #endif
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::size_t i = 0; i < items.size(); ++i) run_item(i);
-  } else {
-    for (std::size_t i = 0; i < items.size(); ++i) run_item(i);
-  }
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    c.group_seconds[items[i].group] += c.item_seconds[i];
-    c.group_cpu_seconds[items[i].group] += c.item_cpu_seconds[i];
+#pragma omp parallel for schedule(dynamic, 1) if (small.size() > 1)
+    for (std::size_t k = 0; k < small.size(); ++k) run_group(small[k]);
   }
   for (std::size_t g = 0; g < ng; ++g) {
     ElementGroup& grp = *m.groups[g];
-    if (!grp.all_deactivated() && grp.force_chunks() > 0) {
-      const auto w0 = Clock::now();
-      grp.end_forces(c.group_results[g]);
-      c.group_seconds[g] += seconds_since(w0);
-    }
     for (Index e : grp.newly_eroded) {
       const Part& p = m.parts[static_cast<std::size_t>(grp.part)];
       c.events.push_back("element " + std::to_string(grp.element_id[static_cast<std::size_t>(e)]) +
@@ -218,68 +170,40 @@ void compute_element_forces(Model& m, CycleState& c) {
   t0.stop(c.times.element_forces, c.cpu_times.element_forces);
 }
 
-bool AssemblyPlan::built_for(const Model& m, std::size_t n_parts) const {
-  return parts == n_parts && n_groups == m.groups.size() && n_nodes == m.nodes.n_nodes;
+bool AssemblyPlan::built_for(const Model& m) const {
+  return n_groups == m.groups.size() && start.size() == m.incidence_start.size() &&
+         n_incidence == m.incidence_slot.size();
 }
 
-void AssemblyPlan::build(const Model& m, std::size_t n_parts) {
-  const std::size_t nn = m.nodes.n_nodes, ng = m.groups.size();
-  parts = n_parts;
-  n_groups = ng;
-  n_nodes = nn;
-  // Node ranges of about equal slot counts.
-  std::vector<std::size_t> per_node(nn, 0);
-  std::size_t total = 0;
-  for (const auto& gp : m.groups) {
-    if (gp->all_deactivated()) continue;
-    for (Index i : gp->connectivity) ++per_node[static_cast<std::size_t>(i)];
-    total += gp->connectivity.size();
-  }
-  node_begin.assign(parts + 1, nn);
-  node_begin[0] = 0;
-  std::size_t acc = 0, p = 1;
-  for (std::size_t i = 0; i < nn && p < parts; ++i) {
-    acc += per_node[i];
-    while (p < parts && acc * parts >= p * total) node_begin[p++] = i + 1;
-  }
-  start.assign(parts * ng + 1, 0);
+void AssemblyPlan::build(const Model& m) {
+  const std::size_t nn = m.incidence_start.empty() ? 0 : m.incidence_start.size() - 1;
+  n_groups = m.groups.size();
+  n_incidence = m.incidence_slot.size();
+  start.assign(nn + 1, 0);
+  rot_start.assign(nn + 1, 0);
   entries.clear();
-  entries.reserve(total);
-  for (std::size_t q = 0; q < parts; ++q)
-    for (std::size_t g = 0; g < ng; ++g) {
-      const ElementGroup& grp = *m.groups[g];
-      if (!grp.all_deactivated())
-        for (std::size_t s = 0; s < grp.connectivity.size(); ++s) {
-          const auto i = static_cast<std::size_t>(grp.connectivity[s]);
-          if (i >= node_begin[q] && i < node_begin[q + 1])
-            entries.push_back({static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(i)});
-        }
-      start[q * ng + g + 1] = entries.size();
+  rot_entries.clear();
+  entries.reserve(m.incidence_slot.size());
+  for (std::size_t i = 0; i < nn; ++i) {
+    for (std::int64_t j = m.incidence_start[i]; j < m.incidence_start[i + 1]; ++j) {
+      const Entry e{static_cast<std::uint32_t>(m.incidence_group[static_cast<std::size_t>(j)]),
+                    static_cast<std::uint32_t>(m.incidence_slot[static_cast<std::size_t>(j)])};
+      if (m.groups[e.group]->all_deactivated()) continue;  // zero slots
+      entries.push_back(e);
+      if (m.groups[e.group]->has_rotation_slots()) rot_entries.push_back(e);
     }
-}
-
-// body(begin, end) over the nodes: on several threads (from kParallelAssemblyNodes nodes)
-// one call per node range of the assembly plan, so that each thread updates the nodes
-// whose forces it has just summed (they are in its core's cache); else one call.
-template <class Body>
-void for_node_ranges(const Model& m, CycleState& c, Body&& body) {
-  const std::size_t nn = m.nodes.n_nodes;
-  const auto threads = static_cast<std::size_t>(max_threads());
-  if (nn < kParallelAssemblyNodes || threads == 1) {
-    body(std::size_t{0}, nn);
-    return;
+    start[i + 1] = static_cast<std::uint32_t>(entries.size());
+    rot_start[i + 1] = static_cast<std::uint32_t>(rot_entries.size());
   }
-  AssemblyPlan& plan = c.assembly;
-  if (!plan.built_for(m, threads)) plan.build(m, threads);
-#pragma omp parallel for schedule(static, 1)
-  for (std::size_t q = 0; q < plan.parts; ++q) body(plan.node_begin[q], plan.node_begin[q + 1]);
 }
 
 // f_i = sum over the slots of node i in (group, element) order; same for M_i, k_n, k_r.
-// One thread: a scatter, group after group, slot after slot: the slot buffers are read
-// in memory order and the nodal arrays stay in cache. Several threads: the same scatter,
-// each thread over the slots of its own node range (AssemblyPlan). Groups whose elements
-// all lie inside rigid bodies (zero slots) are skipped.
+// One thread: scatter, group after group, slot after slot: the slot buffers are read
+// in memory order and the nodal arrays stay in cache; each node receives its slots in
+// (group, element) order, the order of the gather, so the sums are the same bits.
+// Several threads (large models): node-ordered gather through the packed plan (each
+// node summed by one thread). Groups whose elements all lie inside rigid bodies (zero
+// slots) are left out of both.
 void assemble_nodal_forces(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
@@ -292,8 +216,7 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
   double* __restrict myo = n.moment.y.data();
   double* __restrict mzo = n.moment.z.data();
   double* __restrict kro = n.rot_stiffness.data();
-  const auto threads = static_cast<std::size_t>(max_threads());
-  if (nn < kParallelAssemblyNodes || threads == 1) {
+  if (nn < kParallelNodes || max_threads() == 1) {
     for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a, a + nn, 0.0);
     for (const auto& gp : m.groups) {
       const ElementGroup& g = *gp;
@@ -322,34 +245,49 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
     }
   } else {
     AssemblyPlan& plan = c.assembly;
-    if (!plan.built_for(m, threads)) plan.build(m, threads);
-    const std::size_t ng = m.groups.size();
-#pragma omp parallel for schedule(static, 1)
-    for (std::size_t q = 0; q < plan.parts; ++q) {
-      const std::size_t b = plan.node_begin[q], e = plan.node_begin[q + 1];
-      for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a + b, a + e, 0.0);
-      for (std::size_t g = 0; g < ng; ++g) {
-        const ElementGroup& grp = *m.groups[g];
-        const AssemblyPlan::Entry* it = plan.entries.data() + plan.start[q * ng + g];
-        const AssemblyPlan::Entry* end = plan.entries.data() + plan.start[q * ng + g + 1];
-        const double *gfx = grp.slot_force.x.data(), *gfy = grp.slot_force.y.data(),
-                     *gfz = grp.slot_force.z.data(), *gk = grp.slot_stiffness.data();
-        for (const AssemblyPlan::Entry* p = it; p != end; ++p) {
-          fxo[p->node] += gfx[p->slot];
-          fyo[p->node] += gfy[p->slot];
-          fzo[p->node] += gfz[p->slot];
-          ko[p->node] += gk[p->slot];
-        }
-        if (!grp.has_rotation_slots()) continue;
-        const double *gmx = grp.slot_moment.x.data(), *gmy = grp.slot_moment.y.data(),
-                     *gmz = grp.slot_moment.z.data(), *gkr = grp.slot_rot_stiffness.data();
-        for (const AssemblyPlan::Entry* p = it; p != end; ++p) {
-          mxo[p->node] += gmx[p->slot];
-          myo[p->node] += gmy[p->slot];
-          mzo[p->node] += gmz[p->slot];
-          kro[p->node] += gkr[p->slot];
-        }
+    if (!plan.built_for(m)) plan.build(m);
+    // Slot buffers of every group (stable within a cycle).
+    auto& ptr = c.slot_pointers;
+    ptr.resize(m.groups.size());
+    for (std::size_t g = 0; g < m.groups.size(); ++g) {
+      const ElementGroup& grp = *m.groups[g];
+      ptr[g] = {grp.slot_force.x.data(), grp.slot_force.y.data(), grp.slot_force.z.data(),
+                grp.slot_stiffness.data(), grp.slot_moment.x.data(), grp.slot_moment.y.data(),
+                grp.slot_moment.z.data(), grp.slot_rot_stiffness.data()};
+    }
+    const SlotPointers* P = ptr.data();
+    const std::uint32_t* start = plan.start.data();
+    const AssemblyPlan::Entry* ent = plan.entries.data();
+    const std::uint32_t* rstart = plan.rot_start.data();
+    const AssemblyPlan::Entry* rent = plan.rot_entries.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < nn; ++i) {
+      double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0;
+      for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
+        const SlotPointers& p = P[ent[j].group];
+        const std::uint32_t s = ent[j].slot;
+        fx += p.fx[s];
+        fy += p.fy[s];
+        fz += p.fz[s];
+        k += p.k[s];
       }
+      fxo[i] = fx;
+      fyo[i] = fy;
+      fzo[i] = fz;
+      ko[i] = k;
+      double mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
+      for (std::uint32_t j = rstart[i]; j < rstart[i + 1]; ++j) {
+        const SlotPointers& p = P[rent[j].group];
+        const std::uint32_t s = rent[j].slot;
+        mx += p.mx[s];
+        my += p.my[s];
+        mz += p.mz[s];
+        kr += p.kr[s];
+      }
+      mxo[i] = mx;
+      myo[i] = my;
+      mzo[i] = mz;
+      kro[i] = kr;
     }
   }
   for (Vec3Soa* v : {&n.force_ext, &n.contact_force}) {
@@ -442,26 +380,25 @@ void update_velocities(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.dt_mid;
-  for_node_ranges(m, c, [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      if (n.is_secondary[i] || !(n.mass[i] > 0.0)) continue;
-      const double inv_m = 1.0 / n.mass[i];
-      const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
-      n.a.x[i] = ax;
-      n.a.y[i] = ay;
-      n.a.z[i] = az;
-      n.v.x[i] += dt * ax;
-      n.v.y[i] += dt * ay;
-      n.v.z[i] += dt * az;
-    }
-    for (std::size_t i = b; i < e; ++i) {
-      if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
-      const double inv = 1.0 / n.inertia[i];
-      n.omega.x[i] += dt * n.moment.x[i] * inv;
-      n.omega.y[i] += dt * n.moment.y[i] * inv;
-      n.omega.z[i] += dt * n.moment.z[i] * inv;
-    }
+  const std::size_t nn = n.n_nodes;
+  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
+    if (n.is_secondary[i] || !(n.mass[i] > 0.0)) return;
+    const double inv_m = 1.0 / n.mass[i];
+    const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
+    n.a.x[i] = ax;
+    n.a.y[i] = ay;
+    n.a.z[i] = az;
+    n.v.x[i] += dt * ax;
+    n.v.y[i] += dt * ay;
+    n.v.z[i] += dt * az;
   });
+  for (std::size_t i = 0; i < nn; ++i) {
+    if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
+    const double inv = 1.0 / n.inertia[i];
+    n.omega.x[i] += dt * n.moment.x[i] * inv;
+    n.omega.y[i] += dt * n.moment.y[i] * inv;
+    n.omega.z[i] += dt * n.moment.z[i] * inv;
+  }
   t0.stop(c.times.nodal_update, c.cpu_times.nodal_update);
 }
 
@@ -537,12 +474,11 @@ void update_positions(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.step.dt_next;
-  for_node_ranges(m, c, [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i < e; ++i) {
-      n.x.x[i] += dt * n.v.x[i];
-      n.x.y[i] += dt * n.v.y[i];
-      n.x.z[i] += dt * n.v.z[i];
-    }
+  const std::size_t nn = n.n_nodes;
+  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
+    n.x.x[i] += dt * n.v.x[i];
+    n.x.y[i] += dt * n.v.y[i];
+    n.x.z[i] += dt * n.v.z[i];
   });
   c.step.time += dt;
   c.step.dt_prev = dt;

@@ -28,9 +28,6 @@ class ShellElementGroup final : public ElementGroup {
   std::string_view formulation() const override;
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
-  std::size_t force_chunks() const override;
-  void compute_force_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes) override;
-  void end_forces(GroupStepResult& result) override;
   bool solid_cells() const override { return false; }
   void cell_field(CellField field, std::span<double> out) const override;
   std::size_t n_small_strain() const override { return data.n_frozen(); }

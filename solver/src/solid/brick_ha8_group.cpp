@@ -337,7 +337,7 @@ void BrickHa8Group::compute_forces(const StepContext& step, const NodalState& no
   const std::size_t nch = n_chunks(n_elements);
   std::vector<double> e_int_c(nch, 0.0), dt_c(nch, std::numeric_limits<double>::infinity());
   std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
-  parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // fewer than 8 chunks: not worth a region
+  parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
     compute_chunk(ch, step, nodes, e_int_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);
   });
   for (std::size_t ch = 0; ch < nch; ++ch) {

@@ -23,7 +23,6 @@
 #include "solid/small_strain_switch.hpp"
 #include "solid/solid_material.hpp"
 
-#include <limits>
 #include <array>
 #include <vector>
 
@@ -75,22 +74,12 @@ class SolidGroup final : public ElementGroup {
   std::string_view formulation() const override;
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
-  std::size_t force_chunks() const override;
-  void begin_forces(const StepContext& step, const NodalState& nodes) override;
-  void compute_force_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes) override;
-  void end_forces(GroupStepResult& result) override;
   void cell_field(CellField field, std::span<double> out) const override;
 
   // Total stress of element e (LAW34: long-term part + hereditary part).
   void stress(std::size_t e, double s[6]) const;
 
  private:
-  // Partial sums of one chunk of the current cycle (end_forces reduces them in chunk order).
-  struct ChunkSums {
-    double e_int = 0.0, e_hg = 0.0, dt = std::numeric_limits<double>::infinity();
-    Index dt_elem = kNoIndex, inverted = kNoIndex;
-  };
-  std::vector<ChunkSums> chunk_sums_;
   // 8-node bricks: one chunk in batches of elements (lanes), each stage a vectorised loop
   // over the lanes of a batch.
   void compute_brick_chunk(std::size_t chunk, const StepContext& step, const NodalState& nodes,

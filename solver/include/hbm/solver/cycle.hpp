@@ -30,34 +30,33 @@ struct PhaseTimes {
          time_step = 0, nodal_update = 0, energies = 0, output = 0;
 };
 
-// Assembly on several threads: the nodes split into one contiguous range per thread, each
-// receiving about the same number of slots; per range and group the (slot, node) pairs of
-// the slots whose node lies in the range, in slot order. Each thread scatters its range's
-// pairs group after group, so every node receives its slots in (group, element) order,
-// as on one thread: the same bits for any thread count. Groups whose elements all lie in
-// rigid bodies (zero slots) are left out.
+// The slot buffers of one group for the assembly (moment pointers null without
+// rotational DOFs).
+struct SlotPointers {
+  const double *fx, *fy, *fz, *k, *mx, *my, *mz, *kr;
+};
+
+// Node-ordered gather plan of the assembly, derived from Model::incidence_* on the
+// first cycle: entry (group, slot) packed in 8 bytes, and a second CSR that lists only
+// the slots of groups with rotational DOFs (moments, k_r), so that the many nodes of
+// translational elements read no moment slots.
 struct AssemblyPlan {
   struct Entry {
-    std::uint32_t slot, node;
+    std::uint32_t group, slot;
   };
-  std::size_t parts = 0, n_groups = 0, n_nodes = 0;
-  std::vector<std::size_t> node_begin;  // parts + 1: node range of each part
-  std::vector<std::size_t> start;       // parts * n_groups + 1: entries of (part, group)
+  std::vector<std::uint32_t> start;      // n_nodes + 1, all slots of node i
   std::vector<Entry> entries;
-  bool built_for(const Model& m, std::size_t n_parts) const;
-  void build(const Model& m, std::size_t n_parts);
+  std::vector<std::uint32_t> rot_start;  // n_nodes + 1, rotational slots of node i
+  std::vector<Entry> rot_entries;
+  std::size_t n_groups = 0;
+  std::size_t n_incidence = 0;  // incidence entries it was built from (slots of groups
+                                // whose elements are all deactivated are left out)
+  bool built_for(const Model& m) const;
+  void build(const Model& m);
 };
 
 // Why a cycle asks the loop to stop (None = keep going).
 enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass, EnergyError };
-
-// One work item of the element forces: chunk `chunk` of a group that splits into chunks,
-// or (kWholeGroup) a group computed whole by its compute_forces.
-struct ForceItem {
-  static constexpr std::size_t kWholeGroup = static_cast<std::size_t>(-1);
-  std::size_t group = 0, chunk = kWholeGroup;
-  std::size_t elements = 0;  // elements it computes (the largest items are handed out first)
-};
 
 struct CycleState {
   StepContext step;
@@ -77,10 +76,8 @@ struct CycleState {
   // and scaled (an estimate; the clock is a system call) [s].
   std::vector<double> group_cpu_seconds;
   AssemblyPlan assembly;
-  // Work items of the element forces (compute_element_forces), built on the first cycle.
-  std::vector<ForceItem> force_items;
-  std::size_t force_items_groups = static_cast<std::size_t>(-1);  // group count they were built for
-  std::vector<double> item_seconds, item_cpu_seconds;              // per item, this cycle
+  std::vector<SlotPointers> slot_pointers;  // per group, refreshed every cycle
+  std::vector<std::size_t> small_groups;    // groups shared out between threads
   // Where /DT/NODA/CST put mass: per group, per element (allocated on first use) [mass].
   std::vector<std::vector<double>> element_added_mass;
   std::vector<std::string> events;  // element deletions etc., printed by the run loop

@@ -117,17 +117,6 @@ class ElementGroup : public ThSource {
   virtual void compute_forces(const StepContext& step, const NodalState& nodes,
                               GroupStepResult& result) = 0;
 
-  // The same computation split into work items, so that the core runs the chunks of all
-  // groups in one parallel loop per cycle (compute_element_forces): begin_forces once, then
-  // compute_force_chunk(ch, ...) for every ch < force_chunks() on any thread in any order,
-  // then end_forces, which reduces the chunks' partials in chunk order. Same bits as
-  // compute_forces. force_chunks() = 0 (default): the group is one item, compute_forces.
-  virtual std::size_t force_chunks() const { return 0; }
-  virtual void begin_forces(const StepContext& /*step*/, const NodalState& /*nodes*/) {}
-  virtual void compute_force_chunk(std::size_t /*chunk*/, const StepContext& /*step*/,
-                                   const NodalState& /*nodes*/) {}
-  virtual void end_forces(GroupStepResult& /*result*/) {}
-
   // VTK cell of element e: writes its distinct node indices to `nodes` (capacity
   // nodes_per_element) and returns the cell type and count (degenerate bricks as wedge
   // or tetra). Default: all nodes, type from nodes_per_element (2 line, 3 triangle,
