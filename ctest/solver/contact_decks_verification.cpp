@@ -15,6 +15,8 @@
 //    transmitted amplitude within 3% of the control bar's.
 //  - contact_moving_wall: a moving /RWALL/PLANE (node, Mass, VX0) strikes a free block:
 //    X momentum of wall + block conserved to the CSV precision at every output.
+//  - contact_blocks_collide with Stfac and VISs 0, blank, or 1 and 0.05 written out: the
+//    same time histories (OpenRadioss reads 0 as the default), and not those of VISs 1e-30.
 #include "example_deck_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -255,6 +257,45 @@ TEST(ContactDecks, MovingWallOfGivenMassConservesMomentum) {
     EXPECT_NEAR(p, p0, 1e-9 * p0) << "t = " << r[0];
   }
   EXPECT_LT(nodes.rows.back()[wall], 0.9 * vw);
+}
+
+// OpenRadioss reads a TYPE7 Stfac or VISs of 0 as its default (starter
+// hm_read_inter_type07.F: STFAC 0 -> 1, VISC 0 -> 0.05), as it reads a blank one; the same
+// deck must mean the same here. The committed deck writes VISs 1e-30 (no damping): its
+// time histories must differ from the default's, or the comparison would prove nothing.
+TEST(ContactDecks, ZeroOrBlankStfacAndVisSAreTheOpenRadiossDefaults) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_blocks_collide";
+  const std::string src = read_text(example_deck(name));
+  const std::string contact_line = "  1.000000000000E+00  0.000000000000E+00  2.000000000000E-01";
+  const std::string damping_line = "                                       0  1.000000000000E-30";
+  auto variant = [&](const std::string& tag, const std::string& stfac, const std::string& vis) {
+    std::string deck = src;
+    auto replace_all = [&deck](const std::string& from, const std::string& to) {
+      int n = 0;
+      for (auto pos = deck.find(from); pos != std::string::npos; pos = deck.find(from, pos + to.size()), ++n)
+        deck.replace(pos, from.size(), to);
+      EXPECT_EQ(n, 2) << from;  // two interfaces
+    };
+    replace_all(contact_line, stfac + contact_line.substr(20));
+    replace_all(damping_line, damping_line.substr(0, 40) + vis);
+    const fs::path dir = fs::current_path() / ("defaults_" + tag + per_process_suffix());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / (name + "_0000.rad")) << deck;
+    fs::copy_file(example_deck(name).parent_path() / (name + "_0001.rad"), dir / (name + "_0001.rad"));
+    std::string log;
+    EXPECT_EQ(run_solver(dir / (name + "_0000.rad"), log), 0) << log;
+    return read_text(dir / "out" / (name + "_TH_INTER_1.csv")) + read_text(dir / "out" / (name + "_TH_NODE_2.csv"));
+  };
+  const std::string written = variant("written", "  1.000000000000E+00", "  5.000000000000E-02");
+  const std::string zero = variant("zero", "  0.000000000000E+00", "  0.000000000000E+00");
+  const std::string blank = variant("blank", std::string(20, ' '), std::string(20, ' '));
+  const std::string undamped = variant("undamped", "  1.000000000000E+00", "  1.000000000000E-30");
+  ASSERT_FALSE(written.empty());
+  EXPECT_TRUE(zero == written) << "Stfac 0 / VISs 0 differ from 1 / 0.05";
+  EXPECT_TRUE(blank == written) << "blank Stfac / VISs differ from 1 / 0.05";
+  EXPECT_FALSE(undamped == written) << "VISs 0.05 changes nothing: the comparison proves nothing";
 }
 
 TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {

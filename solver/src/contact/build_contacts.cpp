@@ -3,7 +3,8 @@
 // /SURF/PART, /SURF/SEG, /INTER/TYPE7, /INTER/TYPE2 and /RWALL/PLANE and adds the
 // interfaces (Interaction) and walls and ties (Constraint) to the model.
 //
-// Defaults (Radioss TYPE7 conventions): Stfac 1, VIS_S 0.05, Tstop infinite; Gapmin
+// Defaults (Radioss TYPE7 conventions; Stfac and VIS_S also when given as 0, as OpenRadioss
+// reads them): Stfac 1, VIS_S 0.05, Tstop infinite; Gapmin
 // blank or 0 with Igap 0: the smallest of half the main shells' thickness and a tenth
 // of the main solid faces' size. With /DT/NODA/CST the penalty is capped so that the
 // contact alone keeps the fixed step (PenaltyContactParams::fixed_dt).
@@ -161,7 +162,11 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     ctx.warning(c, "Igap = " + std::to_string(p.igap) + " treated as Igap = 1 (gap from thicknesses)");
     p.igap = 1;
   }
-  p.stfac = contact::blank_any(c, {"Stfac"}) ? 1.0 : contact::real_any(c, {"Stfac"});
+  // Stfac and VIS_S: blank or 0 reads as the default (Stfac 1, VIS_S 0.05), as OpenRadioss
+  // reads them (starter hm_read_inter_type07.F: IF(STFAC==ZERO) STFAC=ONE,
+  // IF(VISC==ZERO) VISC=FIVEEM2), so that a deck means the same in both solvers.
+  const double stfac = contact::blank_any(c, {"Stfac"}) ? 0.0 : contact::real_any(c, {"Stfac"});
+  p.stfac = stfac == 0.0 ? 1.0 : stfac;
   p.fric = contact::real_any(c, {"Fric"});
   p.gapmin = contact::real_any(c, {"Gapmin"});
   p.tstart = contact::real_any(c, {"Tstart"});
@@ -174,10 +179,12 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
   if (contact::has_any(c, {"Gapmax", "Gap_max"})) p.gapmax = contact::real_any(c, {"Gapmax", "Gap_max"});
   if (contact::has_any(c, {"Stmin"})) p.stmin = contact::real_any(c, {"Stmin"});
   if (contact::has_any(c, {"Stmax"})) p.stmax = contact::real_any(c, {"Stmax"});
-  if (contact::has_any(c, {"VISs", "VIS_S", "VISS"}))
-    p.vis_s = contact::blank_any(c, {"VISs", "VIS_S", "VISS"}) ? 0.05 : contact::real_any(c, {"VISs", "VIS_S", "VISS"});
-  if (p.fric < 0 || p.vis_s < 0 || p.stfac <= 0) {
-    ctx.error(c, "Stfac must be > 0, Fric and VIS_S >= 0");
+  if (contact::has_any(c, {"VISs", "VIS_S", "VISS"})) {
+    const double vis = contact::blank_any(c, {"VISs", "VIS_S", "VISS"}) ? 0.0 : contact::real_any(c, {"VISs", "VIS_S", "VISS"});
+    p.vis_s = vis == 0.0 ? 0.05 : vis;
+  }
+  if (p.fric < 0 || p.vis_s < 0 || p.stfac < 0) {
+    ctx.error(c, "Stfac, Fric and VIS_S must be >= 0 (Stfac and VIS_S: 0 or blank is the default 1, 0.05)");
     return;
   }
   warn_unsupported(ctx, c, {"Ibag", "Idel", "Iadm", "Fpenmax", "ITIED", "mesh_size", "dtmin", "Irem_gap",
