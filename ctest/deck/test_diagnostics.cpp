@@ -142,6 +142,36 @@ TEST(DeckDiagnostics, ModelSummaryOfTheSmallDeck) {
   EXPECT_EQ(s.dt_part, 3);
 }
 
+// OpenRadioss reads a typed 0 in fields such as /PROP/TYPE14 qa, qb, h or /INTER/TYPE7
+// Stfac, VISs as the field's default (starter: IF(QA==ZERO) QA=ONEP1, ...), as it reads a
+// blank; a field without that rule (/MAT/LAW1 rho here: 0 is an error) keeps its 0.
+TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
+  const auto dir = std::filesystem::temp_directory_path() / "hbm_deck_zero_default_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "z_0000.rad") << starter(
+      "/PROP/TYPE14/1\nzeros\n         0\n  0.000000000000E+00                  0.                   0\n"
+      "/PROP/TYPE14/2\nvalues\n         0\n                 1.5                0.07                0.12\n"
+      "/MAT/LAW2/1\nm\n              7.8E-6\n                210.                 0.3\n"
+      "                 0.3                 0.5                   0\n");
+  const ReadResult r = read_deck(dir / "z_0000.rad", Section::Starter);
+  ASSERT_TRUE(errors_of(r).empty()) << messages(r);
+  const Card& zeros = *r.deck.cards_of("/PROP/TYPE14")[0];
+  EXPECT_DOUBLE_EQ(zeros.real(1, "qa"), 1.1);
+  EXPECT_DOUBLE_EQ(zeros.real(1, "qb"), 0.05);
+  EXPECT_DOUBLE_EQ(zeros.real(1, "h"), 0.1);
+  const Card& values = *r.deck.cards_of("/PROP/TYPE14")[1];
+  EXPECT_DOUBLE_EQ(values.real(1, "qa"), 1.5);
+  EXPECT_DOUBLE_EQ(values.real(1, "qb"), 0.07);
+  EXPECT_DOUBLE_EQ(values.real(1, "h"), 0.12);
+  const Card& law2 = *r.deck.cards_of("/MAT/LAW2")[0];
+  EXPECT_DOUBLE_EQ(law2.real(2, "n"), 1.0);  // hm_read_mat02.F: IF (CN == ZERO) CN = ONE
+  // A field without the rule: rho typed 0 stays 0 and is an error.
+  std::ofstream(dir / "z_0000.rad") << starter("/MAT/LAW1/1\nm\n                  0.\n                  1.                 0.3\n");
+  const auto errs = errors_of(read_deck(dir / "z_0000.rad", Section::Starter));
+  ASSERT_EQ(errs.size(), 1u);
+  EXPECT_NE(errs[0].find("field rho = 0: must be > 0"), std::string::npos) << errs[0];
+}
+
 TEST(DeckDiagnostics, IncludeChainAndCycle) {
   const auto dir = std::filesystem::temp_directory_path() / "hbm_deck_include_test";
   std::filesystem::create_directories(dir / "sub");

@@ -408,6 +408,10 @@ class Parser {
         v.blank = false;
         return;
     }
+    if (f.zero_is_default && v.real == 0.0) {
+      v = default_value(f);  // OpenRadioss reads 0 as the default, as it reads a blank
+      return;
+    }
     if (auto p = detail::range_problem(f, v))
       sink_.error(loc, col, detail::field_prefix(c, f, v, deck_) + *p);
   }

@@ -80,6 +80,12 @@ inline FieldSpec real_field(std::string_view name, int col, Dimension dim, Range
   return f;
 }
 
+// The same field with a typed 0 read as its default (FieldSpec::zero_is_default).
+inline FieldSpec zero_means_default(FieldSpec f) {
+  f.zero_is_default = true;
+  return f;
+}
+
 inline FieldSpec text_field(std::string_view name, int col, int width, std::string_view meaning) {
   FieldSpec f;
   f.name = name;

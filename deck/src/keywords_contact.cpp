@@ -101,7 +101,7 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
         int_field("Irem_i2", 90, 0, 1, 0, "deactivate pairs already tied by TYPE2"),
     }));
     k.lines.push_back(line("contact", {
-        real_field("Stfac", 0, Dimension::None, kNonNegative, 1, "stiffness scale factor (Istf = 0) or stiffness (0 = 1)"),
+        zero_means_default(real_field("Stfac", 0, Dimension::None, kNonNegative, 1, "stiffness scale factor (Istf = 0) or stiffness")),
         real_field("Fric", 20, Dimension::None, kNonNegative, 0, "Coulomb friction coefficient"),
         real_field("Gapmin", 40, Dimension::Length, kNonNegative, 0, "minimum gap"),
         real_field("Tstart", 60, Dimension::Time, kNonNegative, 0, "start time"),
@@ -110,7 +110,7 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
     k.lines.push_back(line("damping", {
         text_field("IBC", 7, 3, "boundary condition flags X Y Z of deactivated nodes, columns 8-10"),
         int_field("Inacti", 30, 0, 6, 0, "initial penetration treatment flag"),
-        real_field("VISs", 40, Dimension::None, kNonNegative, 0.05, "critical damping coefficient on stiffness (0 = 0.05)"),
+        zero_means_default(real_field("VISs", 40, Dimension::None, kNonNegative, 0.05, "critical damping coefficient on stiffness")),
         real_field("VISF", 60, Dimension::None, kNonNegative, 1, "critical damping coefficient on friction"),
         real_field("Bumult", 80, Dimension::None, kNonNegative, 0.2, "sorting factor"),
     }));

@@ -78,7 +78,7 @@ void add_starter_loads(std::vector<KeywordSpec>& out) {
     }));
     k.lines.push_back(line("line 2", {
         real_field("Ascale_x", 0, Dimension::Time, kPositive, 1, "abscissa (time) scale"),
-        real_field("Fscale_y", 20, Dimension::Velocity, kAny, 1, "ordinate (velocity) scale"),
+        zero_means_default(real_field("Fscale_y", 20, Dimension::Velocity, kAny, 1, "ordinate (velocity) scale")),
         real_field("Tstart", 40, Dimension::Time, kNonNegative, 0, "start time"),
         real_field("Tstop", 60, Dimension::Time, kNonNegative, 0, "stop time (0 = never)"),
     }, true));
@@ -106,7 +106,7 @@ void add_starter_loads(std::vector<KeywordSpec>& out) {
     }));
     k.lines.push_back(line("line 2", {
         real_field("Ascale_x", 0, Dimension::Time, kPositive, 1, "abscissa (time) scale"),
-        real_field("Fscale_y", 20, Dimension::Acceleration, kAny, 1, "ordinate (acceleration) scale"),
+        zero_means_default(real_field("Fscale_y", 20, Dimension::Acceleration, kAny, 1, "ordinate (acceleration) scale")),
     }, true));
     out.push_back(std::move(k));
   }

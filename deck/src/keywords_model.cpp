@@ -89,7 +89,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     }, true));
     k.lines.push_back(line("line 4", {
         real_field("F", 0, Dimension::None, kAny, 1, "rate effect function scale"),
-        real_field("E", 20, Dimension::None, kAny, 0, "rate effect function scale"),
+        zero_means_default(real_field("E", 20, Dimension::None, kAny, 1, "rate effect function scale")),
         real_field("Ascale", 40, Dimension::Length, kAny, 1, "abscissa scale of fct_id1"),
         real_field("Hscale", 60, Dimension::Velocity, kAny, 1, "abscissa scale of fct_id2"),
     }, true));
@@ -184,9 +184,9 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
     }));
     k.lines.push_back(line("line 2", {
-        real_field("qa", 0, Dimension::None, kNonNegative, 1.1, "quadratic bulk viscosity"),
-        real_field("qb", 20, Dimension::None, kNonNegative, 0.05, "linear bulk viscosity"),
-        real_field("h", 40, Dimension::None, kUnit, 0.1, "hourglass coefficient"),
+        zero_means_default(real_field("qa", 0, Dimension::None, kNonNegative, 1.1, "quadratic bulk viscosity")),
+        zero_means_default(real_field("qb", 20, Dimension::None, kNonNegative, 0.05, "linear bulk viscosity")),
+        zero_means_default(real_field("h", 40, Dimension::None, kUnit, 0.1, "hourglass coefficient")),
         real_field("lambda_v", 60, Dimension::None, kNonNegative, 0, "numerical viscosity lambda_v"),
         real_field("mu_v", 80, Dimension::None, kNonNegative, 0, "numerical viscosity mu_v"),
     }, true));
@@ -218,7 +218,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(line("hardening", {
         real_field("a", 0, Dimension::Stress, kPositive, 0, "yield stress"),
         real_field("b", 20, Dimension::Stress, kNonNegative, 0, "hardening parameter"),
-        real_field("n", 40, Dimension::None, {0, 1, false, false}, 1, "hardening exponent"),
+        zero_means_default(real_field("n", 40, Dimension::None, {0, 1, false, false}, 1, "hardening exponent")),
         real_field("EPS_p_max", 60, Dimension::Strain, kNonNegative, 0,
                    "plastic strain at element deletion (0 = none)"),
         real_field("SIG_max0", 80, Dimension::Stress, kNonNegative, 0, "maximum stress (0 = none)"),
@@ -289,11 +289,11 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         fct("fct_ID5", 40, "yield curve 5"),
     }));
     k.lines.push_back(line("curve scales", {
-        real_field("Fscale1", 0, Dimension::Stress, kAny, 1, "scale of yield curve 1"),
-        real_field("Fscale2", 20, Dimension::Stress, kAny, 1, "scale of yield curve 2"),
-        real_field("Fscale3", 40, Dimension::Stress, kAny, 1, "scale of yield curve 3"),
-        real_field("Fscale4", 60, Dimension::Stress, kAny, 1, "scale of yield curve 4"),
-        real_field("Fscale5", 80, Dimension::Stress, kAny, 1, "scale of yield curve 5"),
+        zero_means_default(real_field("Fscale1", 0, Dimension::Stress, kAny, 1, "scale of yield curve 1")),
+        zero_means_default(real_field("Fscale2", 20, Dimension::Stress, kAny, 1, "scale of yield curve 2")),
+        zero_means_default(real_field("Fscale3", 40, Dimension::Stress, kAny, 1, "scale of yield curve 3")),
+        zero_means_default(real_field("Fscale4", 60, Dimension::Stress, kAny, 1, "scale of yield curve 4")),
+        zero_means_default(real_field("Fscale5", 80, Dimension::Stress, kAny, 1, "scale of yield curve 5")),
     }, true));
     k.lines.push_back(line("curve rates", {
         real_field("EPS_dot1", 0, Dimension::StrainRate, kNonNegative, 0, "strain rate of curve 1"),

@@ -74,7 +74,7 @@ void line_table(std::ostream& os, const LineSpec& l, bool starter, const std::st
     else os << pos;
     os << " | " << type_name(f.type) << " | " << to_string(f.dim) << " | " << range(f) << " | ";
     if (f.type == FieldType::Text) os << "blank";
-    else os << num(f.default_value);
+    else os << num(f.default_value) << (f.zero_is_default ? " (also for 0)" : "");
     os << " | " << f.meaning << " |\n";
   }
 }
@@ -93,7 +93,10 @@ std::string document() {
         "- Starter deck `NAME_0000.rad`: fixed format. A field occupies the columns given below "
         "(1-based); numbers may sit anywhere inside their field; a blank field takes the default. "
         "Only 100 columns are read: any text past column 100, and any text in columns where the "
-        "line has no field, is an error. Tabs are errors (columns would be ambiguous).\n"
+        "line has no field, is an error. Tabs are errors (columns would be ambiguous). A default "
+        "marked \"(also for 0)\" applies to a typed 0 as well, as OpenRadioss reads that field "
+        "(its starter sets `IF (X == ZERO) X = default`): to ask for no bulk viscosity, contact "
+        "damping or gravity there, write a tiny value (1e-30) or a zero function.\n"
         "- Engine deck `NAME_0001.rad`: free format, values separated by blanks, in the order given.\n"
         "- Lines starting with `#` are comments. `#include FILE` reads FILE (relative to the "
         "including file) in place; include cycles are errors; messages show the include chain.\n"

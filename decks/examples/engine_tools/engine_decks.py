@@ -67,10 +67,12 @@ def patch_distorted():
         return x, y, z
     grid, el = d.block(2, 2, 2, (2.0, 2.0, 2.0), warp=warp)
     d.law1(1, "elastic", rho, E, nu)
-    d.prop_solid(1, "solid", qa=0.0, qb=0.0)
+    d.prop_solid(1, "solid", qa=1e-30, qb=1e-30)  # no bulk viscosity (0 reads as the default)
     d.part(1, "patch", 1, 1)
     d.bricks(1, el)
     d.funct(1, "constant", [(0, 1), (1, 1)])
+    # A zero velocity takes a zero function: a scale of 0 reads as 1 (OpenRadioss's default).
+    d.funct(2, "zero", [(0, 0), (1, 0)])
     A = [[rate[0], rate[3], rate[5]], [rate[3], rate[1], rate[4]], [rate[5], rate[4], rate[2]]]
     gid = 1
     for key, n in sorted(grid.items()):
@@ -80,7 +82,7 @@ def patch_distorted():
         d.grnod_node(gid, f"node {n}", [n])
         for a, name in enumerate("XYZ"):
             v = sum(A[a][b] * x[b] for b in range(3))
-            d.impvel(100 * gid + a, f"node {n} {name}", 1, name, gid, v)
+            d.impvel(100 * gid + a, f"node {n} {name}", 1 if v != 0 else 2, name, gid, v if v != 0 else 1.0)
         d.inivel(100 + gid, f"node {n}", [sum(A[a][b] * x[b] for b in range(3)) for a in range(3)], gid)
         gid += 1
     xi = d.nodes[grid[(1, 1, 1)]]
@@ -97,7 +99,7 @@ def single_element(name, header, mat_writer, law_tstop, strain, node_vars=("DX",
     d = Deck(name, header)
     grid, el = d.block(1, 1, 1, (1.0, 1.0, 1.0))
     mat_writer(d)
-    d.prop_solid(1, "solid", qa=0.0, qb=0.0)
+    d.prop_solid(1, "solid", qa=1e-30, qb=1e-30)  # no bulk viscosity (0 reads as the default)
     d.part(1, "cube", 1, 1)
     d.bricks(1, el)
     d.grnod_node(1, "x0", face(grid, 0, 0))
@@ -153,7 +155,7 @@ def relax_law34():
         run_line("relax_law34"), CHECK])
     grid, el = d.block(1, 1, 1, (1.0, 1.0, 1.0))
     d.law34(1, "tissue", rho, K, G0, Ginf, beta)
-    d.prop_solid(1, "solid", qa=0.0, qb=0.0)
+    d.prop_solid(1, "solid", qa=1e-30, qb=1e-30)  # no bulk viscosity (0 reads as the default)
     d.part(1, "cube", 1, 1)
     d.bricks(1, el)
     d.grnod_node(1, "bottom", face(grid, 1, 0))
@@ -329,7 +331,7 @@ def tetra_prism_uniaxial():
     prisms = [(d.next_elem, [h[(0, 0, 0)], h[(1, 0, 0)], h[(1, 1, 0)], h[(1, 1, 0)], h[(0, 0, 1)], h[(1, 0, 1)], h[(1, 1, 1)], h[(1, 1, 1)]]),
               (d.next_elem + 1, [h[(0, 0, 0)], h[(1, 1, 0)], h[(0, 1, 0)], h[(0, 1, 0)], h[(0, 0, 1)], h[(1, 1, 1)], h[(0, 1, 1)], h[(0, 1, 1)]])]
     d.law1(1, "elastic", rho, E, nu)
-    d.prop_solid(1, "solid", qa=0.0, qb=0.0)
+    d.prop_solid(1, "solid", qa=1e-30, qb=1e-30)  # no bulk viscosity (0 reads as the default)
     d.part(1, "tetra cube", 1, 1)
     d.part(2, "prism cube", 1, 1)
     d.tetras(1, tets)

@@ -162,11 +162,9 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     ctx.warning(c, "Igap = " + std::to_string(p.igap) + " treated as Igap = 1 (gap from thicknesses)");
     p.igap = 1;
   }
-  // Stfac and VIS_S: blank or 0 reads as the default (Stfac 1, VIS_S 0.05), as OpenRadioss
-  // reads them (starter hm_read_inter_type07.F: IF(STFAC==ZERO) STFAC=ONE,
-  // IF(VISC==ZERO) VISC=FIVEEM2), so that a deck means the same in both solvers.
-  const double stfac = contact::blank_any(c, {"Stfac"}) ? 0.0 : contact::real_any(c, {"Stfac"});
-  p.stfac = stfac == 0.0 ? 1.0 : stfac;
+  // Stfac and VIS_S: blank or 0 read as the default 1, 0.05 (the deck library's
+  // zero_is_default, as OpenRadioss's starter hm_read_inter_type07.F reads them).
+  p.stfac = contact::real_any(c, {"Stfac"});
   p.fric = contact::real_any(c, {"Fric"});
   p.gapmin = contact::real_any(c, {"Gapmin"});
   p.tstart = contact::real_any(c, {"Tstart"});
@@ -179,12 +177,9 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
   if (contact::has_any(c, {"Gapmax", "Gap_max"})) p.gapmax = contact::real_any(c, {"Gapmax", "Gap_max"});
   if (contact::has_any(c, {"Stmin"})) p.stmin = contact::real_any(c, {"Stmin"});
   if (contact::has_any(c, {"Stmax"})) p.stmax = contact::real_any(c, {"Stmax"});
-  if (contact::has_any(c, {"VISs", "VIS_S", "VISS"})) {
-    const double vis = contact::blank_any(c, {"VISs", "VIS_S", "VISS"}) ? 0.0 : contact::real_any(c, {"VISs", "VIS_S", "VISS"});
-    p.vis_s = vis == 0.0 ? 0.05 : vis;
-  }
-  if (p.fric < 0 || p.vis_s < 0 || p.stfac < 0) {
-    ctx.error(c, "Stfac, Fric and VIS_S must be >= 0 (Stfac and VIS_S: 0 or blank is the default 1, 0.05)");
+  if (contact::has_any(c, {"VISs", "VIS_S", "VISS"})) p.vis_s = contact::real_any(c, {"VISs", "VIS_S", "VISS"});
+  if (p.fric < 0 || p.vis_s < 0 || p.stfac <= 0) {
+    ctx.error(c, "Stfac must be > 0, Fric and VIS_S >= 0");
     return;
   }
   warn_unsupported(ctx, c, {"Ibag", "Idel", "Iadm", "Fpenmax", "ITIED", "mesh_size", "dtmin", "Irem_gap",

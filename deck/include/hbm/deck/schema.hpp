@@ -45,6 +45,9 @@ struct FieldSpec {
   bool min_exclusive = false;
   bool max_exclusive = false;
   double default_value = 0;  // used when the field is blank
+  // A typed 0 also means the default (as OpenRadioss reads the field: its starter sets
+  // IF(X == ZERO) X = default, and reads a blank as 0). The value then reads as blank.
+  bool zero_is_default = false;
   RefKind ref = RefKind::None;
   bool ref_optional = true;  // 0 / blank means "none" for an Id field
   std::string_view meaning;  // one line, for docs/deck-format.md
