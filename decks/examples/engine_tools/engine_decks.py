@@ -255,7 +255,7 @@ def law34_impact(name, header, tstop, nodal):
     n, L = 8, 40.0
     grid, el = d.block(n, n, n // 2, (L, L, L / 2))
     d.law34(1, "soft tissue", rho, K, G0, Ginf, beta)
-    d.prop_solid(1, "solid (default: Isolid 24 for LAW34)")
+    d.prop_solid(1, "solid: Isolid 24, physical hourglass", isolid=24)
     d.part(1, "tissue block", 1, 1)
     d.bricks(1, el)
     bottom = face(grid, 2, 0)
@@ -384,7 +384,7 @@ if __name__ == "__main__":
     law34_impact("law34_impact", [
         "law34_impact: a punch (5 x 5 top nodes, imposed velocity) hits a LAW34 tissue block",
         "(40 x 40 x 20 mm, 8 x 8 x 4 bricks, K = 0.02 GPa >> G0 = 2e-4 GPa) at 6.7 m/s.",
-        "Hourglass: physical stabilisation in the corotational frame (default for LAW34).",
+        "Hourglass: physical stabilisation in the corotational frame (Isolid 24).",
         "What it shows: no inverted element, normal termination, hourglass energy below 10%",
         "of the internal energy at the end (5 mm indentation).",
         run_line("law34_impact"), CHECK], 0.75, None)

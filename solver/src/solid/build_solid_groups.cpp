@@ -90,7 +90,10 @@ bool read_solid_material(BuildContext& ctx, const hbm::deck::Card& m, SolidMater
 }
 
 bool read_solid_property(BuildContext& ctx, const Part& part, int nodes_per_element, SolidGroup& g) {
-  g.hourglass = g.material.viscoelastic() ? HourglassForm::Physical : HourglassForm::Viscous;
+  // Isolid 0 (and no property) is Isolid 1 for every material, as OpenRadioss reads it
+  // (hm_read_prop14.F: IHBE 0 -> the /DEF_SOLID value, 1 by default); the physical form is
+  // Isolid 24, written out (until 2026-11-24 LAW34 took it by default here).
+  g.hourglass = HourglassForm::Viscous;
   const hbm::deck::Card* p = part.prop_card;
   if (!p) return true;
   if (p->keyword() != "/PROP/TYPE14") {

@@ -6,10 +6,10 @@
 // brick kernel as loops over the chunk's elements (lanes) that the compiler vectorises.
 //
 // Hourglass control (bricks), chosen by /PROP/TYPE14 Isolid:
-//  - Viscous (Isolid 0/1, default except LAW34): f = -c q gamma,
+//  - Viscous (Isolid 0/1, the default for every material, as in OpenRadioss): f = -c q gamma,
 //    c = h rho c_wave V^(2/3) / 4, q_alpha = sum_I v_I gamma_alpha,I (FB 1981).
 //  - Stiffness (Isolid 2): Q += k q dt, k = h (lambda + 2G) V (B:B) / 8, f = -Q gamma.
-//  - Physical (Isolid 24, default for LAW34): hourglass strains of the linear and
+//  - Physical (Isolid 24): hourglass strains of the linear and
 //    bilinear velocity modes in a corotational element frame, deviatoric energy
 //    2 G0 dev(eps_hg) only (no volumetric locking: Belytschko & Bindeman 1993 ADS),
 //    parasitic shear of the bending modes dropped (no shear locking), closed form for a
