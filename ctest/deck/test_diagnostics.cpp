@@ -165,6 +165,9 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
   EXPECT_DOUBLE_EQ(values.real(1, "h"), 0.12);
   const Card& law2 = *r.deck.cards_of("/MAT/LAW2")[0];
   EXPECT_DOUBLE_EQ(law2.real(2, "n"), 1.0);  // hm_read_mat02.F: IF (CN == ZERO) CN = ONE
+  // Our own writers may not put a 0 there: it would read as the default.
+  Deck built;
+  EXPECT_THROW(CardBuilder(built, "/PROP/TYPE14", 1, "p").set(1, "qa", 0.0), std::invalid_argument);
   // A field without the rule: rho typed 0 stays 0 and is an error.
   std::ofstream(dir / "z_0000.rad") << starter("/MAT/LAW1/1\nm\n                  0.\n                  1.                 0.3\n");
   const auto errs = errors_of(read_deck(dir / "z_0000.rad", Section::Starter));

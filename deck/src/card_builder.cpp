@@ -46,6 +46,10 @@ void set_real(Card& c, Row& r, std::string_view field, double v) {
   if (!std::isfinite(v))
     throw std::invalid_argument("CardBuilder: field " + std::string(field) + " of " + std::string(c.keyword()) +
                                 " set to a non-finite value");
+  if (f->zero_is_default && v == 0.0)
+    throw std::invalid_argument("CardBuilder: field " + std::string(field) + " of " + std::string(c.keyword()) +
+                                " set to 0, which reads as its default (as in OpenRadioss): write a tiny value "
+                                "for none");
   if (f->type == FieldType::Int) {
     if (v != std::trunc(v) || std::fabs(v) > 9.0e15)
       throw std::invalid_argument("CardBuilder: integer field " + std::string(field) + " of " +
