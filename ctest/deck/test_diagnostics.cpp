@@ -70,7 +70,7 @@ TEST(DeckDiagnostics, PlantedErrorsEachReportedAtTheirLine) {
        "(n2-n1)x(n4-n1).(n5-n1) > 0: n1-n4 counter-clockwise seen from the n5-n8 side)"},
       {24, 81, "/BRICK/1 field n8 = 99: node 99 is not defined"},
       {34, 16, "/MAT/LAW1/1 field E = -210: must be > 0"},
-      {34, 38, "/MAT/LAW1/1 field nu = 0.5: must be in (-1, 0.5)"},
+      {34, 38, "/MAT/LAW1/1 field nu = 0.6: must be in (-1, 0.5)"},
       {35, 1, "keyword /MAT/LAW3 is not supported; nearest supported keyword: /MAT/LAW1"},
       {42, 1, "/FUNCT/5 field X = 1: abscissa must increase (previous point X = 2)"},
       {45, 104, "content past column 100 (the starter reads 100 columns)"},
@@ -165,6 +165,13 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
   EXPECT_DOUBLE_EQ(values.real(1, "h"), 0.12);
   const Card& law2 = *r.deck.cards_of("/MAT/LAW2")[0];
   EXPECT_DOUBLE_EQ(law2.real(2, "n"), 1.0);  // hm_read_mat02.F: IF (CN == ZERO) CN = ONE
+  // Poisson's ratio 0.5 reads as 0.499 with a warning (hm_read_mat01.F: IF(ANU==HALF)ANU=ZEP499).
+  std::ofstream(dir / "z_0000.rad") << starter("/MAT/LAW1/1\nm\n                  1.\n                  1.                 0.5\n");
+  const ReadResult half = read_deck(dir / "z_0000.rad", Section::Starter);
+  ASSERT_TRUE(errors_of(half).empty()) << messages(half);
+  EXPECT_DOUBLE_EQ(half.deck.cards_of("/MAT/LAW1")[0]->real(1, "nu"), 0.499);
+  EXPECT_NE(messages(half).find("/MAT/LAW1/1 field nu = 0.5: read as 0.499 (as OpenRadioss reads it)"),
+            std::string::npos) << messages(half);
   // Our own writers may not put a 0 there: it would read as the default.
   Deck built;
   EXPECT_THROW(CardBuilder(built, "/PROP/TYPE14", 1, "p").set(1, "qa", 0.0), std::invalid_argument);

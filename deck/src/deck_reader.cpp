@@ -412,6 +412,12 @@ class Parser {
       v = default_value(f);  // OpenRadioss reads 0 as the default, as it reads a blank
       return;
     }
+    if (v.real == f.replace_value) {
+      sink_.warning(loc, col, detail::field_prefix(c, f, v, deck_) + "read as " + text::format_number(f.replaced_by) +
+                                  " (as OpenRadioss reads it)");
+      v.real = f.replaced_by;
+      v.integer = static_cast<std::int64_t>(v.real);
+    }
     if (auto p = detail::range_problem(f, v))
       sink_.error(loc, col, detail::field_prefix(c, f, v, deck_) + *p);
   }

@@ -86,6 +86,19 @@ inline FieldSpec zero_means_default(FieldSpec f) {
   return f;
 }
 
+// The same field with a typed `from` read as `to` (FieldSpec::replace_value).
+inline FieldSpec replacing(FieldSpec f, double from, double to) {
+  f.replace_value = from;
+  f.replaced_by = to;
+  return f;
+}
+
+// Poisson's ratio: 0.5 reads as 0.499 (OpenRadioss hm_read_mat01.F, mat02, mat36:
+// IF(ANU == HALF) ANU = ZEP499), below which the bulk modulus stays finite.
+inline FieldSpec poisson_field(std::string_view name, int col) {
+  return replacing(real_field(name, col, Dimension::None, kPoisson, 0, "Poisson's ratio (0.5 reads as 0.499)"), 0.5, 0.499);
+}
+
 inline FieldSpec text_field(std::string_view name, int col, int width, std::string_view meaning) {
   FieldSpec f;
   f.name = name;

@@ -202,7 +202,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(density_line());
     k.lines.push_back(line("elasticity", {
         real_field("E", 0, Dimension::Stress, kPositive, 0, "Young's modulus"),
-        real_field("nu", 20, Dimension::None, kPoisson, 0, "Poisson's ratio"),
+        poisson_field("nu", 20),
     }));
     out.push_back(std::move(k));
   }
@@ -212,7 +212,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(density_line());
     k.lines.push_back(line("elasticity", {
         real_field("E", 0, Dimension::Stress, kPositive, 0, "Young's modulus"),
-        real_field("nu", 20, Dimension::None, kPoisson, 0, "Poisson's ratio"),
+        poisson_field("nu", 20),
         int_field("Iflag", 40, 0, 2, 0, "input flag (0 = a, b, n)"),
     }));
     k.lines.push_back(line("hardening", {
@@ -262,7 +262,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(density_line());
     k.lines.push_back(line("elasticity", {
         real_field("E", 0, Dimension::Stress, kPositive, 0, "Young's modulus"),
-        real_field("nu", 20, Dimension::None, kPoisson, 0, "Poisson's ratio"),
+        poisson_field("nu", 20),
         real_field("EPS_p_max", 40, Dimension::Strain, kNonNegative, 0,
                    "plastic strain at failure (0 = none)"),
         real_field("EPS_t", 60, Dimension::Strain, kNonNegative, 0, "tensile strain for damage onset"),

@@ -48,6 +48,11 @@ struct FieldSpec {
   // A typed 0 also means the default (as OpenRadioss reads the field: its starter sets
   // IF(X == ZERO) X = default, and reads a blank as 0). The value then reads as blank.
   bool zero_is_default = false;
+  // A typed value that OpenRadioss replaces when it reads the field (its starter:
+  // IF(ANU == HALF) ANU = ZEP499 for Poisson's ratio): replace_value reads as replaced_by,
+  // with a warning. NaN: none.
+  double replace_value = std::numeric_limits<double>::quiet_NaN();
+  double replaced_by = 0;
   RefKind ref = RefKind::None;
   bool ref_optional = true;  // 0 / blank means "none" for an Id field
   std::string_view meaning;  // one line, for docs/deck-format.md
