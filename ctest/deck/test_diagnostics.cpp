@@ -152,7 +152,8 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
       "/PROP/TYPE14/1\nzeros\n         0\n  0.000000000000E+00                  0.                   0\n"
       "/PROP/TYPE14/2\nvalues\n         0\n                 1.5                0.07                0.12\n"
       "/MAT/LAW2/1\nm\n              7.8E-6\n                210.                 0.3\n"
-      "                 0.3                 0.5                   0\n");
+      "                 0.3                 0.5                   0\n"
+      "/PROP/TYPE4/3\nspring\n               0.001\n                 10.                  0.                  0.\n");
   const ReadResult r = read_deck(dir / "z_0000.rad", Section::Starter);
   ASSERT_TRUE(errors_of(r).empty()) << messages(r);
   const Card& zeros = *r.deck.cards_of("/PROP/TYPE14")[0];
@@ -165,6 +166,9 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
   EXPECT_DOUBLE_EQ(values.real(1, "h"), 0.12);
   const Card& law2 = *r.deck.cards_of("/MAT/LAW2")[0];
   EXPECT_DOUBLE_EQ(law2.real(2, "n"), 1.0);  // hm_read_mat02.F: IF (CN == ZERO) CN = ONE
+  const Card& spring = *r.deck.cards_of("/PROP/TYPE4")[0];
+  EXPECT_DOUBLE_EQ(spring.real(1, "C"), 0.0);  // no rule: 0 stays 0
+  EXPECT_DOUBLE_EQ(spring.real(1, "A"), 1.0);  // hm_read_prop04.F: A 0 -> 1
   // Poisson's ratio 0.5 reads as 0.499 with a warning (hm_read_mat01.F: IF(ANU==HALF)ANU=ZEP499).
   std::ofstream(dir / "z_0000.rad") << starter("/MAT/LAW1/1\nm\n                  1.\n                  1.                 0.5\n");
   const ReadResult half = read_deck(dir / "z_0000.rad", Section::Starter);

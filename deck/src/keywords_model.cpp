@@ -74,9 +74,9 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(line("line 2", {
         real_field("K", 0, Dimension::Stiffness, kNonNegative, 0, "linear stiffness"),
         real_field("C", 20, Dimension::Damping, kNonNegative, 0, "linear damping"),
-        real_field("A", 40, Dimension::None, kAny, 1, "scale of the nonlinear stiffness function"),
+        zero_means_default(real_field("A", 40, Dimension::None, kAny, 1, "scale of the nonlinear stiffness function")),
         real_field("B", 60, Dimension::None, kAny, 0, "logarithmic rate effect scale"),
-        real_field("D", 80, Dimension::None, kAny, 1, "logarithmic rate effect scale"),
+        zero_means_default(real_field("D", 80, Dimension::None, kAny, 1, "logarithmic rate effect scale")),
     }));
     k.lines.push_back(line("line 3", {
         fct("fct_id1", 0, "force vs displacement function f(delta)"),
@@ -88,10 +88,10 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("dmax", 80, Dimension::Length, kAny, 0, "failure displacement in tension"),
     }, true));
     k.lines.push_back(line("line 4", {
-        real_field("F", 0, Dimension::None, kAny, 1, "rate effect function scale"),
+        zero_means_default(real_field("F", 0, Dimension::None, kAny, 1, "rate effect function scale")),
         zero_means_default(real_field("E", 20, Dimension::None, kAny, 1, "rate effect function scale")),
-        real_field("Ascale", 40, Dimension::Length, kAny, 1, "abscissa scale of fct_id1"),
-        real_field("Hscale", 60, Dimension::Velocity, kAny, 1, "abscissa scale of fct_id2"),
+        zero_means_default(real_field("Ascale", 40, Dimension::Length, kAny, 1, "abscissa scale of fct_id1")),
+        zero_means_default(real_field("Hscale", 60, Dimension::Velocity, kAny, 1, "abscissa scale of fct_id2")),
     }, true));
     out.push_back(std::move(k));
   }
@@ -148,9 +148,9 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
       k.lines.push_back(line(block_names[i][0], {
           real_field(K[i], 0, rot ? Dimension::RotStiffness : Dimension::Stiffness, kNonNegative, 0, "linear stiffness"),
           real_field(C[i], 20, rot ? Dimension::RotDamping : Dimension::Damping, kNonNegative, 0, "linear damping"),
-          real_field(A[i], 40, Dimension::None, kAny, 1, "scale of the nonlinear stiffness function"),
+          zero_means_default(real_field(A[i], 40, Dimension::None, kAny, 1, "scale of the nonlinear stiffness function")),
           real_field(B[i], 60, Dimension::None, kAny, 0, "logarithmic rate effect scale"),
-          real_field(D[i], 80, Dimension::None, kAny, 1, "logarithmic rate effect scale"),
+          zero_means_default(real_field(D[i], 80, Dimension::None, kAny, 1, "logarithmic rate effect scale")),
       }, true));
       k.lines.push_back(line(block_names[i][1], {
           fct(F1[i], 0, "force (moment) vs displacement (rotation) function"),
@@ -162,10 +162,10 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
           real_field(DMAX[i], 80, rot ? Dimension::Angle : Dimension::Length, kAny, 0, "failure limit in tension"),
       }, true));
       k.lines.push_back(line(block_names[i][2], {
-          real_field(FF[i], 0, Dimension::None, kAny, 1, "rate effect scale"),
-          real_field(EE[i], 20, Dimension::None, kAny, 0, "rate effect scale"),
-          real_field(AS[i], 40, rot ? Dimension::Angle : Dimension::Length, kAny, 1, "abscissa scale of the stiffness function"),
-          real_field(HS[i], 60, Dimension::Velocity, kAny, 1, "abscissa scale of the rate function"),
+          zero_means_default(real_field(FF[i], 0, Dimension::None, kAny, 1, "rate effect scale")),
+          zero_means_default(real_field(EE[i], 20, Dimension::None, kAny, 1, "rate effect scale")),
+          zero_means_default(real_field(AS[i], 40, rot ? Dimension::Angle : Dimension::Length, kAny, 1, "abscissa scale of the stiffness function")),
+          zero_means_default(real_field(HS[i], 60, Dimension::Velocity, kAny, 1, "abscissa scale of the rate function")),
       }, true));
     }
     out.push_back(std::move(k));

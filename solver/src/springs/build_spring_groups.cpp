@@ -36,8 +36,6 @@ CurveView view_of(const FunctionCurve* f) {
   return {f->x().data(), f->y().data(), f->n_points()};
 }
 
-double default_one(double v) { return v == 0.0 ? 1.0 : v; }
-
 // Field names of one DOF block: TYPE4 uses K, C, ..., fct_id1 ...; TYPE8/13 number them
 // per DOF (K1..K6, fct_ID11..fct_ID16, ...) as in the Radioss reference guide.
 struct DofNames {
@@ -57,18 +55,20 @@ DofNames dof_names(bool axial, std::size_t d) {
 bool read_dof(BuildContext& ctx, const hbm::deck::Card& c, std::size_t k, const DofNames& n,
               SpringDofLaw& law) {
   bool ok = true;
+  // A, D, F, E, Ascale, Hscale: 0 or blank read as 1 (the deck library's zero_is_default,
+  // as OpenRadioss's hm_read_prop04/08/13.F read them).
   law.K = c.real(k, n.K);
   law.C = c.real(k, n.C);
-  law.A = default_one(c.real(k, n.A));
+  law.A = c.real(k, n.A);
   law.B = c.real(k, n.B);
-  law.D = default_one(c.real(k, n.D));
+  law.D = c.real(k, n.D);
   const int h = static_cast<int>(c.integer(k + 1, n.H));
   law.delta_min = c.real(k + 1, n.dmin);
   law.delta_max = c.real(k + 1, n.dmax);
-  law.Fv = default_one(c.real(k + 2, n.F));
+  law.Fv = c.real(k + 2, n.F);
   law.E = c.real(k + 2, n.E);
-  law.Ascale = default_one(c.real(k + 2, n.Ascale));
-  law.Hscale = default_one(c.real(k + 2, n.Hscale));
+  law.Ascale = c.real(k + 2, n.Ascale);
+  law.Hscale = c.real(k + 2, n.Hscale);
   const bool has_line = c.lines.size() > k + 1;
   const hbm::deck::Row& fl = line_or_last(c, k + 1);
   auto fn = [&](const std::string& field) -> CurveView {
