@@ -416,7 +416,6 @@ class Parser {
       sink_.warning(loc, col, detail::field_prefix(c, f, v, deck_) + "read as " + text::format_number(f.replaced_by) +
                                   " (as OpenRadioss reads it)");
       v.real = f.replaced_by;
-      v.integer = static_cast<std::int64_t>(v.real);
     }
     if (auto p = detail::range_problem(f, v))
       sink_.error(loc, col, detail::field_prefix(c, f, v, deck_) + *p);
