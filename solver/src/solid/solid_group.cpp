@@ -164,10 +164,13 @@ void physical_hourglass_lanes(BrickLanes& b, std::size_t n, double dt, double G,
     b.g[3][l] = g10; b.g[4][l] = g11; b.g[5][l] = g12;
     b.g[6][l] = g20; b.g[7][l] = g21; b.g[8][l] = g22;
   }
-  for (int j = 0; j < 3; ++j)
+  for (int j = 0; j < 3; ++j) {  // half extents |g_j| / 8 (sqrt_lanes: vector loops, std::sqrt's bits)
     for (std::size_t l = 0; l < n; ++l)
-      b.half[j][l] = 0.125 * std::sqrt(b.g[3 * j][l] * b.g[3 * j][l] + b.g[3 * j + 1][l] * b.g[3 * j + 1][l] +
-                                       b.g[3 * j + 2][l] * b.g[3 * j + 2][l]);
+      b.half[j][l] = b.g[3 * j][l] * b.g[3 * j][l] + b.g[3 * j + 1][l] * b.g[3 * j + 1][l] +
+                     b.g[3 * j + 2][l] * b.g[3 * j + 2][l];
+    brick::sqrt_lanes(n, b.half[j]);
+    for (std::size_t l = 0; l < n; ++l) b.half[j][l] *= 0.125;
+  }
   for (std::size_t l = 0; l < n; ++l) {
     const double s = 8.0 * b.half[0][l];
     const double r0 = b.g[0][l] / s, r1 = b.g[1][l] / s, r2 = b.g[2][l] / s;
@@ -177,7 +180,7 @@ void physical_hourglass_lanes(BrickLanes& b, std::size_t n, double dt, double G,
     b.g[3][l] = e0; b.g[4][l] = e1; b.g[5][l] = e2;   // second direction, not normed
     b.n2[l] = e0 * e0 + e1 * e1 + e2 * e2;
   }
-  for (std::size_t l = 0; l < n; ++l) b.n2[l] = std::sqrt(b.n2[l]);
+  brick::sqrt_lanes(n, b.n2);
   for (std::size_t l = 0; l < n; ++l) {
     double R[3][3];
     R[0][0] = b.g[0][l]; R[0][1] = b.g[1][l]; R[0][2] = b.g[2][l];
@@ -322,6 +325,7 @@ struct TetraLanes {
   alignas(64) double d[6][W], w[3][W], sig[6][W], hist[6][W], s_new[6][W];
   alignas(64) double V[W], Vm[W], amax2[W], am2[W], ok[W], mv[W], vol_free[W], shift_on[W], mlj[W];
   alignas(64) double mass[W], q_old[W], de[W], dte[W], ks[W];
+  alignas(64) double face[W], c[W], qv[W], root[W];  // square roots taken a row at a time (sqrt_lanes)
 };
 
 namespace {
@@ -459,12 +463,20 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
       b.s_new[k][l] = sn[k] + hn[k];
     }
   }
-  // Bulk viscosity, internal energy, forces, critical step (see compute_tetra_scalar).
+  // Bulk viscosity, internal energy, forces, critical step (see compute_tetra_scalar). The
+  // square roots are taken a row at a time (sqrt_lanes: the same bits as std::sqrt), so that
+  // the stages around them are vector loops (a std::sqrt keeps its loop scalar, errno).
   const double qa2 = qa * qa, qb_ = qb, lambda = mat.lambda, G = mat.G, M = mat.wave_modulus();
   for (std::size_t l = 0; l < n; ++l) {
+    b.face[l] = b.amax2[l];
+    b.c[l] = M / (b.mass[l] * (1.0 / b.V[l]));  // M / rho
+  }
+  brick::sqrt_lanes(n, b.face);
+  brick::sqrt_lanes(n, b.c);
+  for (std::size_t l = 0; l < n; ++l) {
     const double V = b.V[l], inv_v = 1.0 / V;
-    const double lc = 3.0 * V / (3.0 * std::sqrt(b.amax2[l]));  // 3 V / largest face area
-    const double rho = b.mass[l] * inv_v, c = std::sqrt(M / rho);
+    const double lc = 3.0 * V / (3.0 * b.face[l]);  // 3 V / largest face area
+    const double rho = b.mass[l] * inv_v, c = b.c[l];
     const double d0 = b.d[0][l], d1 = b.d[1][l], d2 = b.d[2][l];
     const double dv = d0 + d1 + d2;
     const bool comp = dv < 0.0;
@@ -489,9 +501,15 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     const double iv2 = inv_v * inv_v;
     const double trT = (txx + tyy + tzz) * iv2;
     const double TT = (txx * txx + tyy * tyy + tzz * tzz + 2.0 * (txy * txy + tyz * tyz + tzx * tzx)) * iv2 * iv2;
-    const double omega2 = 4.0 * (lambda * trT * trT + 2.0 * G * TT) / (rho * trT);
-    const double l_eff = 2.0 * c / std::sqrt(omega2);
-    const double dte = l_eff / (qv + std::sqrt(qv * qv + c * c));
+    b.root[l] = 4.0 * (lambda * trT * trT + 2.0 * G * TT) / (rho * trT);  // omega^2
+    b.qv[l] = qv;
+    b.dte[l] = qv * qv + c * c;
+  }
+  brick::sqrt_lanes(n, b.root);
+  brick::sqrt_lanes(n, b.dte);
+  for (std::size_t l = 0; l < n; ++l) {
+    const double l_eff = 2.0 * b.c[l] / b.root[l];
+    const double dte = l_eff / (b.qv[l] + b.dte[l]);
     b.dte[l] = dte;
     b.ks[l] = b.ok[l] * 2.0 * (b.mass[l] / 4.0) / (dte * dte);
   }
