@@ -5,7 +5,7 @@
 // the same bits as glibc's (whose algorithm it follows) where glibc is the libm; special
 // values (0, subnormal, infinity, NaN, negative) as std::cbrt. Rows of 1, 5 and 32
 // lanes (remainder and full vectors).
-#include "solid/lane_vector_ops.hpp"
+#include "core/lane_vector_ops.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <random>
 #include <vector>
 
-namespace hbm::solver::brick {
+namespace hbm::solver::lanes {
 namespace {
 
 std::int64_t ulp_distance(double a, double b) {
@@ -87,4 +87,4 @@ TEST(SolidLaneVectorOps, CbrtLanesExactCubesAndSpecialValues) {
 }
 
 }  // namespace
-}  // namespace hbm::solver::brick
+}  // namespace hbm::solver::lanes

@@ -37,6 +37,7 @@
 // does the arithmetic of the one-element formulas above in the same order, so the
 // results do not depend on the batch nor on the thread count. Square roots sit in loops
 // of their own (without -fno-math-errno a sqrt call keeps a loop scalar).
+#include "core/lane_vector_ops.hpp"
 #include "shells/shell_group_data.hpp"
 #include "shells/shell_lane_gather.hpp"
 #include "shells/shell_thickness_lanes.hpp"
@@ -83,7 +84,8 @@ void local_geometry(QuadLanes& b, std::size_t n) {
       const double s = cx * cx + cy * cy + cz3 * cz3;
       b.sq[l] = s > 0.0 ? s : 1.0;  // folded to a line: finite stand-in (masked)
     }
-    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    lanes::sqrt_lanes(n, b.sq);
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / b.sq[l];
     for (std::size_t l = 0; l < n; ++l) {
       const double n3 = b.sq[l];
       const double e3x = b.e3[0][l] * n3, e3y = b.e3[1][l] * n3, e3z = b.e3[2][l] * n3;
@@ -95,7 +97,8 @@ void local_geometry(QuadLanes& b, std::size_t n) {
       const double s = ax * ax + ay * ay + az * az;
       b.sq[l] = s > 0.0 ? s : 1.0;
     }
-    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / std::sqrt(b.sq[l]);
+    lanes::sqrt_lanes(n, b.sq);
+    for (std::size_t l = 0; l < n; ++l) b.sq[l] = 1.0 / b.sq[l];
     for (std::size_t l = 0; l < n; ++l) {
       const double n1 = b.sq[l];
       const double e1x = b.e1[0][l] * n1, e1y = b.e1[1][l] * n1, e1z = b.e1[2][l] * n1;
@@ -363,7 +366,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
       b.lmax2[l] = lmax2 > 0.0 ? lmax2 : 1.0;
     }
-    for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
+    lanes::sqrt_lanes(n, b.lmax2);
     for (std::size_t l = 0; l < n; ++l) b.dte[l] = b.A[l] / b.lmax2[l] / cwave;
     g.use_frozen_steps(b.dte, idx, n);
     // Slots of a batch with gaps (elements inside a rigid body left out), then the state

@@ -31,6 +31,7 @@
 // of TriaLanes::W (element k of the batch is lane k), every stage a loop over the lanes
 // that GCC vectorises; deleted or degenerate elements are masked on output; each lane
 // does the arithmetic of the one-element formulas in the same order.
+#include "core/lane_vector_ops.hpp"
 #include "shells/shell_group_data.hpp"
 #include "shells/shell_lane_gather.hpp"
 #include "shells/shell_thickness_lanes.hpp"
@@ -97,8 +98,8 @@ void frame_lengths(TriaLanes& b, std::size_t n) {
     b.sq[l] = cx * cx + cy * cy + cz * cz;
     b.l21[l] = r21x * r21x + r21y * r21y + r21z * r21z;
   }
-  for (std::size_t l = 0; l < n; ++l) b.sq[l] = std::sqrt(b.sq[l]);
-  for (std::size_t l = 0; l < n; ++l) b.l21[l] = std::sqrt(b.l21[l]);
+  lanes::sqrt_lanes(n, b.sq);
+  lanes::sqrt_lanes(n, b.l21);
 }
 
 // Local frame (after frame_lengths and masking): e3 = ez / |ez|, e1 along node 1 -> 2,
@@ -187,8 +188,7 @@ void force_geometry(TriaLanes& b, std::size_t n, double hdt, ShellGroupData& g, 
   local_frame(b, n);
   use_frozen_shape(b, n, g, idx);
   side_geometry(b, n);
-  for (int k = 0; k < 3; ++k)
-    for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
+  for (int k = 0; k < 3; ++k) lanes::sqrt_lanes(n, b.sl[k]);
   for (int k = 0; k < 3; ++k)
     for (std::size_t l = 0; l < n; ++l) {
       const double len = b.sl[k][l];
@@ -279,8 +279,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
       b.th.dem[0][l] = dxx * dt; b.th.dem[1][l] = dyy * dt; b.th.dem[2][l] = dxy * dt;
     }
-    for (int k = 0; k < 3; ++k)
-      for (std::size_t l = 0; l < n; ++l) b.sl[k][l] = std::sqrt(b.sl[k][l]);
+    for (int k = 0; k < 3; ++k) lanes::sqrt_lanes(n, b.sl[k]);
     // DKT: rotation rates at the 6 nodes, curvatures at the 3 Hammer points (loops with
     // the lanes innermost: side, node and point indices are constants of each loop).
     for (int i = 0; i < 3; ++i) {
@@ -442,7 +441,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
       b.lmax2[l] = lmax2 > 0.0 ? lmax2 : 1.0;
     }
-    for (std::size_t l = 0; l < n; ++l) b.lmax2[l] = std::sqrt(b.lmax2[l]);
+    lanes::sqrt_lanes(n, b.lmax2);
     for (std::size_t l = 0; l < n; ++l) {
       const double lc = 2.0 * b.A[l] / b.lmax2[l];
       b.dte[l] = std::min(lc, lc * lc / b.th.t[l]) / cwave;

@@ -6,7 +6,7 @@
 
 #include "core/parallel_loop.hpp"
 #include "solid/brick_geometry.hpp"
-#include "solid/lane_vector_ops.hpp"
+#include "core/lane_vector_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,11 +134,11 @@ inline void settle_mid_step_gradient(Lanes& b, LaneCount lane_count, bool have_m
     for (std::size_t l = 0; l < n; ++l) b.Vm[l] = b.Vm[l] > 0.0 ? b.Vm[l] : b.V[l];
   } else {
     for (int i = 0; i < NPE; ++i) {
-      brick::copy_lanes(n, b.bx[i], b.mx[i]);
-      brick::copy_lanes(n, b.by[i], b.my[i]);
-      brick::copy_lanes(n, b.bz[i], b.mz[i]);
+      lanes::copy_lanes(n, b.bx[i], b.mx[i]);
+      lanes::copy_lanes(n, b.by[i], b.my[i]);
+      lanes::copy_lanes(n, b.bz[i], b.mz[i]);
     }
-    brick::copy_lanes(n, b.V, b.Vm);
+    lanes::copy_lanes(n, b.V, b.Vm);
   }
 }
 
@@ -168,7 +168,7 @@ void physical_hourglass_lanes(BrickLanes& b, std::size_t n, double dt, double G,
     for (std::size_t l = 0; l < n; ++l)
       b.half[j][l] = b.g[3 * j][l] * b.g[3 * j][l] + b.g[3 * j + 1][l] * b.g[3 * j + 1][l] +
                      b.g[3 * j + 2][l] * b.g[3 * j + 2][l];
-    brick::sqrt_lanes(n, b.half[j]);
+    lanes::sqrt_lanes(n, b.half[j]);
     for (std::size_t l = 0; l < n; ++l) b.half[j][l] *= 0.125;
   }
   for (std::size_t l = 0; l < n; ++l) {
@@ -180,7 +180,7 @@ void physical_hourglass_lanes(BrickLanes& b, std::size_t n, double dt, double G,
     b.g[3][l] = e0; b.g[4][l] = e1; b.g[5][l] = e2;   // second direction, not normed
     b.n2[l] = e0 * e0 + e1 * e1 + e2 * e2;
   }
-  brick::sqrt_lanes(n, b.n2);
+  lanes::sqrt_lanes(n, b.n2);
   for (std::size_t l = 0; l < n; ++l) {
     double R[3][3];
     R[0][0] = b.g[0][l]; R[0][1] = b.g[1][l]; R[0][2] = b.g[2][l];
@@ -409,13 +409,13 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     b.shift_on[l] = np ? 1.0 : 0.0;
     b.mlj[l] = np ? nodal_pressure.mean_log_j(e0 + l) : 0.0;
   }
-  for (int k = 0; k < 6; ++k) brick::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
+  for (int k = 0; k < 6; ++k) lanes::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
   if (visco)
-    for (int k = 0; k < 6; ++k) brick::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
+    for (int k = 0; k < 6; ++k) lanes::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
   else
     for (int k = 0; k < 6; ++k) std::fill_n(b.hist[k], n, 0.0);
-  brick::copy_lanes(n, mass.data() + e0, b.mass);
-  brick::copy_lanes(n, q_bulk.data() + e0, b.q_old);
+  lanes::copy_lanes(n, mass.data() + e0, b.mass);
+  lanes::copy_lanes(n, q_bulk.data() + e0, b.q_old);
 
   tetra_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
   mask_lanes(b, lane_count, alive, e0, inverted);
@@ -471,8 +471,8 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     b.face[l] = b.amax2[l];
     b.c[l] = M / (b.mass[l] * (1.0 / b.V[l]));  // M / rho
   }
-  brick::sqrt_lanes(n, b.face);
-  brick::sqrt_lanes(n, b.c);
+  lanes::sqrt_lanes(n, b.face);
+  lanes::sqrt_lanes(n, b.c);
   for (std::size_t l = 0; l < n; ++l) {
     const double V = b.V[l], inv_v = 1.0 / V;
     const double lc = 3.0 * V / (3.0 * b.face[l]);  // 3 V / largest face area
@@ -505,8 +505,8 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     b.qv[l] = qv;
     b.dte[l] = qv * qv + c * c;
   }
-  brick::sqrt_lanes(n, b.root);
-  brick::sqrt_lanes(n, b.dte);
+  lanes::sqrt_lanes(n, b.root);
+  lanes::sqrt_lanes(n, b.dte);
   for (std::size_t l = 0; l < n; ++l) {
     const double l_eff = 2.0 * b.c[l] / b.root[l];
     const double dte = l_eff / (b.qv[l] + b.dte[l]);
@@ -777,17 +777,17 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
       }
       b.mv[l] = 0.0;
     }
-  for (int k = 0; k < 6; ++k) brick::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
+  for (int k = 0; k < 6; ++k) lanes::copy_lanes(n, sig[k].data() + e0, b.sig[k]);
   if (visco)
-    for (int k = 0; k < 6; ++k) brick::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
+    for (int k = 0; k < 6; ++k) lanes::copy_lanes(n, hist[k].data() + e0, b.hist[k]);
   else
     for (int k = 0; k < 6; ++k) std::fill_n(b.hist[k], n, 0.0);
-  for (int k = 0; k < 12; ++k) brick::copy_lanes(n, hg[k].data() + e0, b.hg[k]);
+  for (int k = 0; k < 12; ++k) lanes::copy_lanes(n, hg[k].data() + e0, b.hg[k]);
   if (hourglass == HourglassForm::Physical)
-    for (int k = 0; k < 12; ++k) brick::copy_lanes(n, hg_visc[k].data() + e0, b.hgv[k]);
-  brick::copy_lanes(n, mass.data() + e0, b.mass);
-  brick::copy_lanes(n, q_bulk.data() + e0, b.q_old);
-  brick::copy_lanes(n, e_int.data() + e0, b.e_int);
+    for (int k = 0; k < 12; ++k) lanes::copy_lanes(n, hg_visc[k].data() + e0, b.hgv[k]);
+  lanes::copy_lanes(n, mass.data() + e0, b.mass);
+  lanes::copy_lanes(n, q_bulk.data() + e0, b.q_old);
+  lanes::copy_lanes(n, e_int.data() + e0, b.e_int);
 
   brick::volume_gradient_lanes(lane_count, b.x, b.y, b.z, b.bx, b.by, b.bz, b.V, b.amax2);
   mask_lanes(b, lane_count, alive, e0, inverted);
@@ -871,13 +871,13 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
     b.rho[l] = b.mass[l] / b.V[l];
     b.c[l] = M / b.rho[l];
   }
-  brick::copy_lanes(n, b.amax2, b.tmp);
-  brick::sqrt_lanes(n, b.c);
-  brick::sqrt_lanes(n, b.tmp);
+  lanes::copy_lanes(n, b.amax2, b.tmp);
+  lanes::sqrt_lanes(n, b.c);
+  lanes::sqrt_lanes(n, b.tmp);
   for (std::size_t l = 0; l < n; ++l) b.lc[l] = b.V[l] / (4.0 * b.tmp[l]);
   if (hourglass != HourglassForm::Stiffness) {
     for (std::size_t l = 0; l < n; ++l) b.tmp[l] = b.V[l] * b.V[l];
-    brick::cbrt_lanes(n, b.tmp, b.v23);
+    lanes::cbrt_lanes(n, b.tmp, b.v23);
   }
 
   // Bulk viscosity (compression only): q = rho l (qa^2 l dv^2 - qb c dv), dv = tr D < 0.
@@ -1001,8 +1001,8 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
     b.dte[l] = 8.0 * (lambda * trT * trT + two_G * TT) / (b.rho[l] * trT);  // omega^2
     b.tmp[l] = b.qv[l] * b.qv[l] + b.c[l] * b.c[l];
   }
-  brick::sqrt_lanes(n, b.dte);
-  brick::sqrt_lanes(n, b.tmp);
+  lanes::sqrt_lanes(n, b.dte);
+  lanes::sqrt_lanes(n, b.tmp);
   for (std::size_t l = 0; l < n; ++l) b.dte[l] = (2.0 * b.c[l] / b.dte[l]) / (b.qv[l] + b.tmp[l]);
   // Slot stiffness 2 m_I / dt^2 (in tmp: a vectorised loop before the indexed scatter).
   for (std::size_t l = 0; l < n; ++l) b.tmp[l] = b.ok[l] * 2.0 * (b.mass[l] / 8.0) / (b.dte[l] * b.dte[l]);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Vector instructions over the lanes of a brick batch (rows of n <= 32 doubles) where GCC
-// does not emit them by itself, or libm calls that keep a loop scalar:
+// Vector instructions over the lanes of an element batch (rows of n <= 32 doubles: bricks,
+// tetras, shells) where GCC does not emit them by itself, or libm calls that keep a loop
+// scalar:
 //  - sqrt_lanes: a[l] = sqrt(a[l]). Without -fno-math-errno GCC keeps every loop holding a
 //    std::sqrt scalar (a test and a libm call for negative arguments, to set errno), and
 //    the function attribute optimize("no-math-errno") does not change that (GCC 12).
@@ -30,7 +31,7 @@
 #include <immintrin.h>
 #endif
 
-namespace hbm::solver::brick {
+namespace hbm::solver::lanes {
 
 inline void sqrt_lanes(std::size_t n, double* a) {
   std::size_t l = 0;
@@ -84,4 +85,4 @@ inline void copy_lanes(std::size_t n, const double* __restrict src, double* __re
     if (!(x[l] >= DBL_MIN && x[l] <= DBL_MAX)) out[l] = std::cbrt(x[l]);
 }
 
-}  // namespace hbm::solver::brick
+}  // namespace hbm::solver::lanes
