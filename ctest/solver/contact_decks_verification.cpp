@@ -17,6 +17,8 @@
 //    X momentum of wall + block conserved to the CSV precision at every output.
 //  - contact_blocks_collide with Stfac and VISs 0, blank, or 1 and 0.05 written out: the
 //    same time histories (OpenRadioss reads 0 as the default), and not those of VISs 1e-30.
+//  - contact_block_slide with the wall's node group removed (Dsearch 0): no wall node, as in
+//    OpenRadioss: zero wall force, block 3 in free fall (VZ = -g t to 1e-6), a warning.
 #include "example_deck_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -340,4 +342,42 @@ TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {
   EXPECT_NE(text.find("/RWALL/PLANE/7"), std::string::npos) << text;
   EXPECT_NE(text.find("M1 equals M"), std::string::npos) << text;
 #endif
+}
+
+// /RWALL/PLANE secondary nodes as OpenRadioss selects them (starter hm_read_rwall_plane.F):
+// grnd_ID1, plus the nodes within Dsearch of the wall on its free side when Dsearch != 0,
+// minus grnd_ID2; Dsearch 0 without grnd_ID1 gives a wall with no node (it took every node
+// here until 2026-11-24). contact_block_slide's wall holds block 3 (group 3), resting on it
+// under gravity; the variant without the group must let the block fall through the plane
+// (no wall force at any output, the block's vertical speed -g t) and say why in the log,
+// while the slab and block 2, on the free side of the plane, stay off the wall.
+TEST(ContactDecks, RigidWallWithoutGroupOrSearchDistanceHoldsNoNode) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_block_slide";
+  std::string deck = read_text(example_deck(name));
+  const std::string wall_line = "/RWALL/PLANE/1\nfloor wall\n         0         2         3         0\n";
+  const auto pos = deck.find(wall_line);
+  ASSERT_NE(pos, std::string::npos);
+  deck.replace(pos, wall_line.size(), "/RWALL/PLANE/1\nfloor wall\n         0         2         0         0\n");
+  const fs::path dir = fs::current_path() / ("rwall_no_node" + per_process_suffix());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / (name + "_0000.rad")) << deck;
+  fs::copy_file(example_deck(name).parent_path() / (name + "_0001.rad"), dir / (name + "_0001.rad"));
+  std::string log;
+  ASSERT_EQ(run_solver(dir / (name + "_0000.rad"), log), 0) << log;
+  EXPECT_NE(log.find("Dsearch = 0 and no grnd_ID1"), std::string::npos) << log;
+  const ThTable w = read_th(dir / "out" / (name + "_TH_RWALL_2.csv"));
+  ASSERT_FALSE(w.rows.empty());
+  for (const std::string& f : {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"})
+    for (double v : w.column(w.col(f))) EXPECT_EQ(v, 0.0) << f;
+  // Block 3 in free fall: VZ = -g t at every node (g = 1 mm/ms^2 in this deck).
+  const ThTable c = read_th(dir / "out" / (name + "_TH_NODE_3.csv"));
+  std::vector<std::size_t> vz;
+  for (std::size_t i = 0; i < c.header.size(); ++i)
+    if (c.header[i].find(" VZ ") != std::string::npos) vz.push_back(i);
+  ASSERT_EQ(vz.size(), 54u);
+  const std::vector<double> t = c.column(0);
+  for (std::size_t k = 0; k < t.size(); ++k)
+    for (std::size_t j = 27; j < 54; ++j) EXPECT_NEAR(c.rows[k][vz[j]], -1.0 * t[k], 1e-6) << "t = " << t[k];
 }

@@ -136,7 +136,7 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
         id_field("grnod_id2", 30, RefKind::Grnod, false, "node group removed from the secondary nodes"),
     }));
     k.lines.push_back(line("search", {
-        real_field("Dsearch", 0, Dimension::Length, kNonNegative, 0, "secondary node search distance (0 = all)"),
+        real_field("Dsearch", 0, Dimension::Length, kNonNegative, 0, "secondary nodes on the free side within this distance at t = 0 (0 = none by distance)"),
         real_field("fric", 20, Dimension::None, kNonNegative, 0, "friction coefficient (Slide = 2)"),
         real_field("Diameter", 40, Dimension::Length, kNonNegative, 0, "unused for a plane"),
         real_field("ffac", 60, Dimension::None, kNonNegative, 0, "friction filtering factor"),

@@ -279,12 +279,13 @@ void build_rwall(BuildContext& ctx, const Card& c) {
   }
   p.normal = contact::normalized(p.normal);
   // Secondary nodes: grnd_ID1, plus the nodes with mass on the free side within Dsearch
-  // of the wall at t = 0 (Dsearch = 0 without grnd_ID1: all of them), minus grnd_ID2.
+  // of the wall at t = 0 (none by distance when Dsearch = 0), minus grnd_ID2: OpenRadioss
+  // hm_read_rwall_plane.F (a wall with Dsearch 0 and no grnd_ID1 holds no node there).
   std::vector<std::uint8_t> mark(n.n_nodes, 0);
   const auto* g1 = node_group_of(ctx, c, {"grnd_ID1", "grnod_id1", "grnd1", "grnd_id1"}, true);
   if (g1)
     for (Index i : *g1) mark[static_cast<std::size_t>(i)] = 1;
-  const double reach = dsearch > 0 ? dsearch : (g1 ? -1.0 : std::numeric_limits<double>::infinity());
+  const double reach = dsearch > 0 ? dsearch : -1.0;
   if (reach >= 0)
     for (std::size_t i = 0; i < n.n_nodes; ++i) {
       const double d = dot(contact::V3{n.x0.x[i], n.x0.y[i], n.x0.z[i]} - p.point, p.normal);
@@ -328,7 +329,9 @@ void build_rwall(BuildContext& ctx, const Card& c) {
     ctx.warning(c, std::to_string(n_dependent) +
                        " secondary nodes are dependent nodes of a /INTER/TYPE2 tie and are left out of the wall");
   if (sec.empty() && n_body == 0)
-    ctx.warning(c, "rigid wall has no secondary node (grnd_ID1 empty and none within Dsearch)");
+    ctx.warning(c, dsearch > 0 || g1 ? "rigid wall has no secondary node (grnd_ID1 empty and none within Dsearch)"
+                                     : "rigid wall has no secondary node: Dsearch = 0 and no grnd_ID1 (as in "
+                                       "OpenRadioss; give a node group or a search distance)");
   auto wall = std::make_unique<contact::RigidWallPlane>(p, std::move(sec));
   for (auto& [body, js] : on_bodies) wall->add_body(*body, js);
   ctx.add_constraint(std::move(wall));
