@@ -186,6 +186,36 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
   EXPECT_NE(errs[0].find("field rho = 0: must be > 0"), std::string::npos) << errs[0];
 }
 
+// OpenRadioss accepts a /PROP/TYPE1 Thick of 0 when the part (or the element) gives the
+// thickness; the deck is in error only for a shell whose element, part and property
+// thicknesses are all 0, and the message names that element.
+TEST(DeckDiagnostics, ShellThicknessFromPartOrElementWhenThePropertyHasNone) {
+  const auto dir = std::filesystem::temp_directory_path() / "hbm_deck_shell_thickness_test";
+  std::filesystem::create_directories(dir);
+  auto deck = [](const std::string& part_thick, const std::string& element_thick) {
+    return starter(
+        "/NODE\n         1                  0.                  0.                  0.\n"
+        "         2                  1.                  0.                  0.\n"
+        "         3                  1.                  1.                  0.\n"
+        "         4                  0.                  1.                  0.\n"
+        "/PROP/TYPE1/1\nplate\n         0\n\n         3          " "                  0.\n"
+        "/MAT/LAW1/1\nm\n              7.8E-6\n                210.                 0.3\n"
+        "/PART/1\nplate\n         1         1         0" + part_thick + "\n"
+        "/SHELL/1\n         7         1         2         3         4" + std::string(30, ' ') + element_thick + "\n");
+  };
+  std::ofstream(dir / "t_0000.rad") << deck("                 1.5", "");
+  const ReadResult by_part = read_deck(dir / "t_0000.rad", Section::Starter);
+  EXPECT_TRUE(errors_of(by_part).empty()) << messages(by_part);
+  std::ofstream(dir / "t_0000.rad") << deck("", "                 1.5");
+  const ReadResult by_element = read_deck(dir / "t_0000.rad", Section::Starter);
+  EXPECT_TRUE(errors_of(by_element).empty()) << messages(by_element);
+  std::ofstream(dir / "t_0000.rad") << deck("", "");
+  const auto errs = errors_of(read_deck(dir / "t_0000.rad", Section::Starter));
+  ASSERT_EQ(errs.size(), 1u);
+  EXPECT_NE(errs[0].find("/SHELL/1 element 7: shell thickness 0"), std::string::npos) << errs[0];
+  EXPECT_NE(errs[0].find("t_0000.rad:"), std::string::npos) << errs[0];
+}
+
 TEST(DeckDiagnostics, IncludeChainAndCycle) {
   const auto dir = std::filesystem::temp_directory_path() / "hbm_deck_include_test";
   std::filesystem::create_directories(dir / "sub");

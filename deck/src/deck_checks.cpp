@@ -338,7 +338,22 @@ class Checker {
     const std::int64_t eid = v[0].integer;
     if (kw == "/BRICK") brick(c, v, eid, loc);
     else if (kw == "/TETRA4") tetra(c, v, eid, loc);
-    else if (kw == "/SHELL" || kw == "/SH3N") shell(c, v, eid, loc, kw == "/SHELL" ? 4 : 3);
+    else if (kw == "/SHELL" || kw == "/SH3N") {
+      shell(c, v, eid, loc, kw == "/SHELL" ? 4 : 3);
+      shell_thickness(c, r, eid, loc);
+    }
+  }
+
+  // Thickness as the engine takes it: the element's, else its part's, else the property's
+  // (OpenRadioss accepts a /PROP/TYPE1 Thick of 0 when the part or the element gives one).
+  void shell_thickness(const Card& c, const Row& r, std::int64_t eid, SourceLoc loc) {
+    if (c.real(r, "thick") > 0) return;
+    const Card* part = object(RefKind::Part, c.id);
+    if (!part || part->real(0, "thick") > 0) return;  // no part: reported by element_block_part
+    const Card* prop = object(RefKind::Prop, part->integer(0, "prop_id"));
+    if (!prop || prop->spec->keyword != "/PROP/TYPE1" || prop->real(2, "Thick") > 0) return;
+    sink_.error(loc, 1, card_label(c) + " element " + std::to_string(eid) + ": shell thickness 0 (element thick, /PART/" +
+                            std::to_string(part->id) + " thick and " + card_label(*prop) + " Thick all 0 or blank)");
   }
 
   // Trilinear hexahedron: det J at the 8 corners must be >= 0 and the volume > 0; a corner

@@ -30,7 +30,7 @@ LineSpec element_row(int n_nodes, std::vector<FieldSpec> more = {}) {
 LineSpec shell_row(int n_nodes) {
   return element_row(n_nodes, {
       real_field("phi", 60, Dimension::Angle, kAny, 0, "orthotropy angle (deg)"),
-      real_field("thick", 80, Dimension::Length, kNonNegative, 0, "thickness (0 = thickness of the part's property)"),
+      real_field("thick", 80, Dimension::Length, kNonNegative, 0, "thickness (0: the part's, else the property's)"),
   });
 }
 

@@ -55,7 +55,8 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(line("line 3", {
         int_field("N", 0, 0, 10, 0, "integration points through the thickness (0 = 5)", Dimension::Count),
         int_field("Istrain", 10, 0, 2, 0, "strain output flag (Radioss 2020 layout; blank in 2024)"),
-        real_field("Thick", 20, Dimension::Length, kPositive, 0, "shell thickness"),
+        real_field("Thick", 20, Dimension::Length, kNonNegative, 0,
+                   "shell thickness (0: each element needs its own or its part's thickness)"),
         real_field("Ashear", 40, Dimension::None, kNonNegative, 5.0 / 6.0, "shear factor (default 5/6)"),
         int_field("Ithick", 70, 0, 2, 0, "thickness change flag"),
         int_field("Iplas", 80, 0, 2, 0, "plane stress plasticity flag"),
