@@ -414,3 +414,30 @@ TEST(EngineVerification, Law36TabulatedYieldAndErosion) {
   EXPECT_EQ(th.rows.back()[th.col("part 1 cube ER")], 1.0);
   EXPECT_NE(read_text(r->out / "law36_erosion_0001.out").find("element 1 of part 1 'cube' deleted at t = "), std::string::npos);
 }
+
+// /PROP/TYPE14 Isolid 24 takes the coefficient of its viscous hourglass part from dn (0 ->
+// 0.1) and not from h, as OpenRadioss reads it (hm_read_prop14.F: IHBE 24: CVIS = dn, QH =
+// 0). law34_impact writes h = 0.1 and no dn: with h = 0.05 the run must be the same to the
+// last digit (and warn that h is unused), with dn = 0.05 it must differ.
+TEST(EngineVerification, Isolid24ViscousCoefficientIsDnAsInOpenRadioss) {
+  const std::string name = "law34_impact";
+  const std::string prop = "/PROP/TYPE14/1\nsolid: Isolid 24, physical hourglass\n        24\n"
+                           "  1.100000000000E+00  5.000000000000E-02  1.000000000000E-01\n";
+  auto run = [&](const std::string& tag, const std::string& line1, const std::string& h, std::string& log) {
+    const std::string to = "/PROP/TYPE14/1\nsolid: Isolid 24, physical hourglass\n" + line1 +
+                           "\n  1.100000000000E+00  5.000000000000E-02" + h + "\n";
+    EXPECT_EQ(run_modified_deck(name, tag, prop, to, log), 0) << log;
+    const std::filesystem::path out = std::filesystem::current_path() / ("bad_" + tag + per_process_suffix()) / "out";
+    return read_text(out / (name + "_TH_PART_2.csv")) + read_text(out / (name + "_TH_NODE_1.csv"));
+  };
+  const std::string dn_blank = "        24", dn_005 = "        24" + std::string(70, ' ') + "  5.000000000000E-02";
+  std::string log_ref, log_h, log_dn;
+  const std::string ref = run("isolid24_ref", dn_blank, "  1.000000000000E-01", log_ref);
+  const std::string h005 = run("isolid24_h", dn_blank, "  5.000000000000E-02", log_h);
+  const std::string dn005 = run("isolid24_dn", dn_005, "  1.000000000000E-01", log_dn);
+  ASSERT_FALSE(ref.empty());
+  EXPECT_TRUE(h005 == ref) << "h changed an Isolid 24 run";
+  EXPECT_NE(log_h.find("h is not used by Isolid 24"), std::string::npos) << log_h;
+  EXPECT_EQ(log_ref.find("h is not used by Isolid 24"), std::string::npos) << log_ref;
+  EXPECT_FALSE(dn005 == ref) << "dn does not act on Isolid 24";
+}

@@ -50,7 +50,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("hf", 20, Dimension::None, {0, 0.05, false, false}, 0.01, "out-of-plane hourglass coefficient"),
         real_field("hr", 40, Dimension::None, {0, 0.05, false, false}, 0.01, "rotation hourglass coefficient"),
         real_field("dm", 60, Dimension::None, kNonNegative, 0, "membrane damping"),
-        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
+        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping: Isolid 24's viscous hourglass coefficient (0 = 0.1)"),
     }, true));
     k.lines.push_back(line("line 3", {
         int_field("N", 0, 0, 10, 0, "integration points through the thickness (0 = 5)", Dimension::Count),
@@ -182,12 +182,12 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         int_field("Inpts", 50, 0, 333, 0, "number of integration points", Dimension::Count),
         int_field("Itetra4", 60, 0, 3, 0, "4-node tetra formulation flag (0: constant strain; 3: average nodal pressure; 1, 2: not supported by hbm-solver)"),
         int_field("Iframe", 70, 0, 2, 0, "element frame flag"),
-        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
+        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping: Isolid 24's viscous hourglass coefficient (0 = 0.1)"),
     }));
     k.lines.push_back(line("line 2", {
         zero_means_default(real_field("qa", 0, Dimension::None, kNonNegative, 1.1, "quadratic bulk viscosity")),
         zero_means_default(real_field("qb", 20, Dimension::None, kNonNegative, 0.05, "linear bulk viscosity")),
-        zero_means_default(real_field("h", 40, Dimension::None, kUnit, 0.1, "hourglass coefficient")),
+        zero_means_default(real_field("h", 40, Dimension::None, kUnit, 0.1, "hourglass coefficient of Isolid 1, 2 (not used by 24: dn)")),
         real_field("lambda_v", 60, Dimension::None, kNonNegative, 0, "numerical viscosity lambda_v"),
         real_field("mu_v", 80, Dimension::None, kNonNegative, 0, "numerical viscosity mu_v"),
     }, true));

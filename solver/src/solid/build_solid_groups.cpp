@@ -126,7 +126,17 @@ bool read_solid_property(BuildContext& ctx, const Part& part, int nodes_per_elem
   g.icpre = static_cast<int>(p->integer(0, "Icpre"));
   g.qa = p->real(1, "qa");
   g.qb = p->real(1, "qb");
-  g.hourglass_coef = p->real(1, "h");
+  // OpenRadioss hm_read_prop14.F: Isolid 24 takes the coefficient of its viscous part from
+  // dn (0 -> 0.1) and ignores h; Isolid 1 and 2 take h (0 -> 0.1, the field's default).
+  if (isolid == 24) {
+    const double dn = p->real(0, "dn");
+    g.hourglass_coef = dn > 0 ? dn : 0.1;
+    if (p->real(1, "h") != 0.1)
+      ctx.warning(*p, "h is not used by Isolid 24: its viscous hourglass coefficient is dn (" +
+                          std::to_string(g.hourglass_coef) + "), as in OpenRadioss");
+  } else {
+    g.hourglass_coef = p->real(1, "h");
+  }
   return true;
 }
 
