@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 using namespace hbm::solver;
@@ -117,4 +118,28 @@ TEST(ShellBuilder, RefusesOffsetReferencePlaneNamingTheField) {
   const std::string msg = all(b->messages);
   EXPECT_NE(msg.find("Ipos"), std::string::npos) << msg;
   EXPECT_NE(msg.find("/PROP/TYPE1"), std::string::npos) << msg;
+}
+
+// Hourglass coefficients typed 0 or blank take OpenRadioss's defaults (hm_read_prop01.F):
+// Hm = Hf = 0.1 and Hr = 0.01 for Ishell 3, 0.01 for the others; typed values are kept.
+TEST(ShellBuilder, HourglassDefaultsAsOpenRadioss) {
+  const std::string typed = f20(0.01) + f20(0.01) + f20(0.01);
+  auto coefficients = [&](int ishell, const std::string& line2) {
+    std::string st = starter(i10(ishell) + i10(0) + i10(0) + i10(0) + i10(0), kLine3, 0, 0, kLaw1);
+    const auto pos = st.find(typed);
+    EXPECT_NE(pos, std::string::npos);
+    st.replace(pos, typed.size(), line2);
+    const auto b = build(st);
+    EXPECT_TRUE(b->ok) << all(b->messages);
+    for (const auto& g : b->model.groups)
+      if (auto* s = dynamic_cast<const shells::ShellElementGroup*>(g.get()))
+        return std::array<double, 3>{s->data.sec.hm, s->data.sec.hf, s->data.sec.hr};
+    ADD_FAILURE() << "no shell group";
+    return std::array<double, 3>{};
+  };
+  const std::string blank(60, ' ');
+  EXPECT_EQ(coefficients(3, blank), (std::array<double, 3>{0.1, 0.1, 0.01}));
+  EXPECT_EQ(coefficients(4, blank), (std::array<double, 3>{0.01, 0.01, 0.01}));
+  EXPECT_EQ(coefficients(0, f20(0) + f20(0) + f20(0)), (std::array<double, 3>{0.01, 0.01, 0.01}));
+  EXPECT_EQ(coefficients(3, f20(0.02) + f20(0.03) + f20(0.04)), (std::array<double, 3>{0.02, 0.03, 0.04}));
 }

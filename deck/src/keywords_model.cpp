@@ -46,9 +46,11 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
                    "fraction of failed through-thickness points to delete the element"),
     }));
     k.lines.push_back(line("line 2", {
-        real_field("hm", 0, Dimension::None, {0, 0.05, false, false}, 0.01, "membrane hourglass coefficient"),
-        real_field("hf", 20, Dimension::None, {0, 0.05, false, false}, 0.01, "out-of-plane hourglass coefficient"),
-        real_field("hr", 40, Dimension::None, {0, 0.05, false, false}, 0.01, "rotation hourglass coefficient"),
+        real_field("hm", 0, Dimension::None, kUnit, 0,
+                   "membrane hourglass coefficient (0: 0.01; 0.1 with Ishell 3)"),
+        real_field("hf", 20, Dimension::None, kUnit, 0,
+                   "out-of-plane hourglass coefficient (0: 0.01; 0.1 with Ishell 3)"),
+        real_field("hr", 40, Dimension::None, kUnit, 0, "rotation hourglass coefficient (0: 0.01)"),
         real_field("dm", 60, Dimension::None, kNonNegative, 0, "membrane damping"),
         real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping: Isolid 24's viscous hourglass coefficient (0 = 0.1)"),
     }, true));

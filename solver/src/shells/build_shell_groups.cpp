@@ -7,7 +7,8 @@
 //           Ipinch (0 only),
 //           P_thick_fail (fraction of the N points that must fail to delete the shell;
 //           0 = all points),
-//   line 2  Hm Hf Hr (hourglass, 0 -> 0.01 as Radioss), Dm Dn (must be 0),
+//   line 2  Hm Hf Hr (hourglass, 0 -> 0.01, Hm Hf 0.1 for Ishell 3, as OpenRadioss),
+//           Dm Dn (must be 0),
 //   line 3  N (0 -> 5; 1 = membrane), Thick, Ashear (0 -> 5/6), Ithick (1: thickness
 //           follows the membrane strain), Iplas (plane-stress return is always iterative),
 //           Ipos (0 only: mid-surface).
@@ -163,8 +164,10 @@ bool read_shell_property(BuildContext& ctx, const Part& part, bool tria, ShellSe
     const double v = p->real(line, f);
     return v > 0 ? v : def;
   };
-  s.hm = nonzero_default(1, "hm", 0.01);
-  s.hf = nonzero_default(1, "hf", 0.01);
+  // 0 -> OpenRadioss's defaults (hm_read_prop01.F): 0.1, 0.1, 0.01 for Ishell 3, else 0.01.
+  const bool ishell3 = p->integer(0, "Ishell") == 3;
+  s.hm = nonzero_default(1, "hm", ishell3 ? 0.1 : 0.01);
+  s.hf = nonzero_default(1, "hf", ishell3 ? 0.1 : 0.01);
   s.hr = nonzero_default(1, "hr", 0.01);
   if (p->real(1, "dm") != 0.0 || p->real(1, "dn") != 0.0) {
     ctx.error(*p, "membrane / numerical damping Dm, Dn are not supported on shells (give 0)");
