@@ -354,18 +354,12 @@ TEST(ContactDecks, BadWallIsReportedWithFileLineAndKeyword) {
 TEST(ContactDecks, RigidWallWithoutGroupOrSearchDistanceHoldsNoNode) {
   REQUIRE_SOLVER();
   const std::string name = "contact_block_slide";
-  std::string deck = read_text(example_deck(name));
-  const std::string wall_line = "/RWALL/PLANE/1\nfloor wall\n         0         2         3         0\n";
-  const auto pos = deck.find(wall_line);
-  ASSERT_NE(pos, std::string::npos);
-  deck.replace(pos, wall_line.size(), "/RWALL/PLANE/1\nfloor wall\n         0         2         0         0\n");
-  const fs::path dir = fs::current_path() / ("rwall_no_node" + per_process_suffix());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / (name + "_0000.rad")) << deck;
-  fs::copy_file(example_deck(name).parent_path() / (name + "_0001.rad"), dir / (name + "_0001.rad"));
   std::string log;
-  ASSERT_EQ(run_solver(dir / (name + "_0000.rad"), log), 0) << log;
+  ASSERT_EQ(run_modified_deck(name, "rwall_no_node", "/RWALL/PLANE/1\nfloor wall\n         0         2         3         0\n",
+                              "/RWALL/PLANE/1\nfloor wall\n         0         2         0         0\n", log),
+            0)
+      << log;
+  const fs::path dir = fs::current_path() / ("bad_rwall_no_node" + per_process_suffix());
   EXPECT_NE(log.find("Dsearch = 0 and no grnd_ID1"), std::string::npos) << log;
   const ThTable w = read_th(dir / "out" / (name + "_TH_RWALL_2.csv"));
   ASSERT_FALSE(w.rows.empty());
