@@ -375,3 +375,36 @@ TEST(ContactDecks, RigidWallWithoutGroupOrSearchDistanceHoldsNoNode) {
   for (std::size_t k = 0; k < t.size(); ++k)
     for (std::size_t j = 27; j < 54; ++j) EXPECT_NEAR(c.rows[k][vz[j]], -1.0 * t[k], 1e-6) << "t = " << t[k];
 }
+
+// TYPE7 Stmin and Stmax act only with Istf 2-5, as OpenRadioss reads them
+// (hm_read_inter_type07.F: IGSTI > 1 keeps them, else STMIN = 0, STMAX = 1e30); they used to
+// cap the Istf 0 stiffness here. On contact_blocks_collide's first interface, a Stmax of
+// 1e-9 kN/mm with Istf 0 must leave the run as it is (and warn), with Istf 2 it must change
+// the run against Istf 2 alone.
+TEST(ContactDecks, StminStmaxActOnlyWithIstfTwoToFive) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_blocks_collide";
+  const std::string from = "         1         2         0         0         0\n"
+                           "  0.000000000000E+00  0.000000000000E+00  0.000000000000E+00\n"
+                           "  0.000000000000E+00  0.000000000000E+00\n";
+  auto run = [&](const std::string& tag, int istf, const std::string& stmax, std::string& log) {
+    char line1[64];
+    std::snprintf(line1, sizeof line1, "         1         2%10d         0         0\n", istf);
+    const std::string to = line1 + std::string("  0.000000000000E+00  0.000000000000E+00  0.000000000000E+00\n") +
+                           "  0.000000000000E+00" + stmax + "\n";
+    EXPECT_EQ(run_modified_deck(name, tag, from, to, log), 0) << log;
+    const fs::path out = fs::current_path() / ("bad_" + tag + per_process_suffix()) / "out";
+    return read_text(out / (name + "_TH_INTER_1.csv")) + read_text(out / (name + "_TH_NODE_2.csv"));
+  };
+  const std::string none = "  0.000000000000E+00", tiny = "  1.000000000000E-09";
+  std::string log0, log0s, log2, log2s;
+  const std::string istf0 = run("stmax_istf0", 0, none, log0);
+  const std::string istf0_capped = run("stmax_istf0_capped", 0, tiny, log0s);
+  const std::string istf2 = run("stmax_istf2", 2, none, log2);
+  const std::string istf2_capped = run("stmax_istf2_capped", 2, tiny, log2s);
+  ASSERT_FALSE(istf0.empty());
+  EXPECT_TRUE(istf0_capped == istf0) << "Stmax acted with Istf 0";
+  EXPECT_NE(log0s.find("Stmax is not used with Istf 0"), std::string::npos) << log0s;
+  EXPECT_FALSE(istf2_capped == istf2) << "Stmax did not act with Istf 2";
+  EXPECT_EQ(log2s.find("is not used"), std::string::npos) << log2s;
+}

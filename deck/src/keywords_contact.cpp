@@ -87,14 +87,14 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
         int_field("Iadm", 90, 0, 2, 0, "adaptive meshing flag"),
     }));
     k.lines.push_back(line("gap", {
-        real_field("Fscalegap", 0, Dimension::None, kNonNegative, 0, "gap scale factor"),
-        real_field("Gapmax", 20, Dimension::Length, kNonNegative, 0, "maximum gap (0 = none)"),
+        real_field("Fscalegap", 0, Dimension::None, kNonNegative, 0, "gap scale factor (Igap >= 2; 0 = 1)"),
+        real_field("Gapmax", 20, Dimension::Length, kNonNegative, 0, "maximum gap (Igap >= 2; 0 = none)"),
         real_field("Fpenmax", 40, Dimension::None, kUnit, 0, "maximum penetration fraction (0 = none)"),
         int_field("ITIED", 60, 0, 2, 0, "tied contact flag"),
     }));
     k.lines.push_back(line("stiffness limits", {
-        real_field("Stmin", 0, Dimension::Stiffness, kNonNegative, 0, "minimum stiffness"),
-        real_field("Stmax", 20, Dimension::Stiffness, kNonNegative, 0, "maximum stiffness (0 = none)"),
+        real_field("Stmin", 0, Dimension::Stiffness, kNonNegative, 0, "minimum stiffness (Istf 2-5)"),
+        real_field("Stmax", 20, Dimension::Stiffness, kNonNegative, 0, "maximum stiffness (Istf 2-5; 0 = none)"),
         real_field("mesh_size", 40, Dimension::None, kNonNegative, 0, "%mesh_size: gap as fraction of mesh size"),
         real_field("dtmin", 60, Dimension::Time, kNonNegative, 0, "minimum interface time step"),
         int_field("Irem_gap", 80, 0, 2, 0, "deactivate secondary nodes if element size < gap"),

@@ -158,6 +158,7 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     ctx.error(c, "Istf = " + std::to_string(p.istf) + ": supported values are 0 to 5");
     return;
   }
+  const int igap_typed = p.igap;
   if (p.igap >= 2) {
     ctx.warning(c, "Igap = " + std::to_string(p.igap) + " treated as Igap = 1 (gap from thicknesses)");
     p.igap = 1;
@@ -170,13 +171,29 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
   p.tstart = contact::real_any(c, {"Tstart"});
   const double tstop = contact::real_any(c, {"Tstop"});
   p.tstop = tstop > 0 ? tstop : std::numeric_limits<double>::infinity();
-  if (contact::has_any(c, {"Fscalegap", "Fscale_gap"})) {
-    const double fs = contact::real_any(c, {"Fscalegap", "Fscale_gap"});
-    p.gap_scale = fs > 0 ? fs : 1.0;
+  // As OpenRadioss reads them (hm_read_inter_type07.F): Fscalegap and Gapmax act with
+  // Igap >= 2 only (here read as Igap 1, gap from thicknesses: they scale and cap it), Stmin
+  // and Stmax with Istf >= 2 only; elsewhere they are dropped, with a warning here.
+  auto dropped = [&](std::initializer_list<std::string_view> names, const std::string& why) {
+    for (std::string_view f : names)
+      if (contact::has_any(c, {f}) && contact::real_any(c, {f}) != 0.0)
+        ctx.warning(c, std::string(f) + " is not used " + why + " (as in OpenRadioss)");
+  };
+  if (igap_typed >= 2) {
+    if (contact::has_any(c, {"Fscalegap", "Fscale_gap"})) {
+      const double fs = contact::real_any(c, {"Fscalegap", "Fscale_gap"});
+      p.gap_scale = fs > 0 ? fs : 1.0;
+    }
+    if (contact::has_any(c, {"Gapmax", "Gap_max"})) p.gapmax = contact::real_any(c, {"Gapmax", "Gap_max"});
+  } else {
+    dropped({"Fscalegap", "Gapmax"}, "with Igap " + std::to_string(igap_typed));
   }
-  if (contact::has_any(c, {"Gapmax", "Gap_max"})) p.gapmax = contact::real_any(c, {"Gapmax", "Gap_max"});
-  if (contact::has_any(c, {"Stmin"})) p.stmin = contact::real_any(c, {"Stmin"});
-  if (contact::has_any(c, {"Stmax"})) p.stmax = contact::real_any(c, {"Stmax"});
+  if (p.istf >= 2) {
+    if (contact::has_any(c, {"Stmin"})) p.stmin = contact::real_any(c, {"Stmin"});
+    if (contact::has_any(c, {"Stmax"})) p.stmax = contact::real_any(c, {"Stmax"});
+  } else {
+    dropped({"Stmin", "Stmax"}, "with Istf " + std::to_string(p.istf));
+  }
   if (contact::has_any(c, {"VISs", "VIS_S", "VISS"})) p.vis_s = contact::real_any(c, {"VISs", "VIS_S", "VISS"});
   if (p.fric < 0 || p.vis_s < 0 || p.stfac <= 0) {
     ctx.error(c, "Stfac must be > 0, Fric and VIS_S >= 0");
@@ -201,7 +218,7 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     for (double k : main->k0) zero += k <= 0;
     if (zero > 0 && p.stmin <= 0)
       ctx.error(c, std::to_string(zero) + " main segment(s) have no stiffness (no element or material "
-                   "with E/K): use Istf = 1 with Stfac = stiffness, or Stmin > 0");
+                   "with E/K): use Istf = 1 with Stfac = stiffness, or Istf 2-5 with Stmin > 0");
   }
   std::vector<double> node_gap, node_k0;
   if (p.igap == 1) node_gap = geo.node_half_thickness(*sec);
