@@ -52,7 +52,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
                    "out-of-plane hourglass coefficient (0: 0.01; 0.1 with Ishell 3)"),
         real_field("hr", 40, Dimension::None, kUnit, 0, "rotation hourglass coefficient (0: 0.01)"),
         real_field("dm", 60, Dimension::None, kNonNegative, 0, "membrane damping"),
-        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping: Isolid 24's viscous hourglass coefficient (0 = 0.1)"),
+        real_field("dn", 80, Dimension::None, kNonNegative, 0, "numerical damping"),
     }, true));
     k.lines.push_back(line("line 3", {
         int_field("N", 0, 0, 10, 0, "integration points through the thickness (0 = 5)", Dimension::Count),
