@@ -359,7 +359,7 @@ TEST(ContactDecks, RigidWallWithoutGroupOrSearchDistanceHoldsNoNode) {
                               "/RWALL/PLANE/1\nfloor wall\n         0         2         0         0\n", log),
             0)
       << log;
-  const fs::path dir = fs::current_path() / ("bad_rwall_no_node" + per_process_suffix());
+  const fs::path dir = modified_deck_dir("rwall_no_node");
   EXPECT_NE(log.find("Dsearch = 0 and no grnd_ID1"), std::string::npos) << log;
   const ThTable w = read_th(dir / "out" / (name + "_TH_RWALL_2.csv"));
   ASSERT_FALSE(w.rows.empty());
@@ -393,7 +393,7 @@ TEST(ContactDecks, StminStmaxActOnlyWithIstfTwoToFive) {
     const std::string to = line1 + std::string("  0.000000000000E+00  0.000000000000E+00  0.000000000000E+00\n") +
                            "  0.000000000000E+00" + stmax + "\n";
     EXPECT_EQ(run_modified_deck(name, tag, from, to, log), 0) << log;
-    const fs::path out = fs::current_path() / ("bad_" + tag + per_process_suffix()) / "out";
+    const fs::path out = modified_deck_dir(tag) / "out";
     return read_text(out / (name + "_TH_INTER_1.csv")) + read_text(out / (name + "_TH_NODE_2.csv"));
   };
   const std::string none = "  0.000000000000E+00", tiny = "  1.000000000000E-09";

@@ -144,13 +144,18 @@ inline int run_solver(const std::filesystem::path& starter, std::string& output)
 #endif
 }
 
+// The folder run_modified_deck uses for `tag` (its outputs are in <folder>/out).
+inline std::filesystem::path modified_deck_dir(const std::string& tag) {
+  return std::filesystem::current_path() / ("bad_" + tag + per_process_suffix());
+}
+
 // Copies decks/examples/<name>/ into ./bad_<tag><per-process suffix>/ with the first `from`
 // replaced by `to` in the starter deck (the engine deck as it is) and runs hbm-solver on it:
 // exit code and console text, as run_solver.
 inline int run_modified_deck(const std::string& name, const std::string& tag, const std::string& from,
                              const std::string& to, std::string& output) {
   const std::filesystem::path src = example_deck(name).parent_path();
-  const std::filesystem::path dir = std::filesystem::current_path() / ("bad_" + tag + per_process_suffix());
+  const std::filesystem::path dir = modified_deck_dir(tag);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::string starter = read_text(src / (name + "_0000.rad"));

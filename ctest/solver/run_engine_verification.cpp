@@ -427,7 +427,7 @@ TEST(EngineVerification, Isolid24ViscousCoefficientIsDnAsInOpenRadioss) {
     const std::string to = "/PROP/TYPE14/1\nsolid: Isolid 24, physical hourglass\n" + line1 +
                            "\n  1.100000000000E+00  5.000000000000E-02" + h + "\n";
     EXPECT_EQ(run_modified_deck(name, tag, prop, to, log), 0) << log;
-    const std::filesystem::path out = std::filesystem::current_path() / ("bad_" + tag + per_process_suffix()) / "out";
+    const std::filesystem::path out = modified_deck_dir(tag) / "out";
     return read_text(out / (name + "_TH_PART_2.csv")) + read_text(out / (name + "_TH_NODE_1.csv"));
   };
   const std::string dn_blank = "        24", dn_005 = "        24" + std::string(70, ' ') + "  5.000000000000E-02";
