@@ -325,7 +325,9 @@ struct TetraLanes {
   alignas(64) double d[6][W], w[3][W], sig[6][W], hist[6][W], s_new[6][W];
   alignas(64) double V[W], Vm[W], amax2[W], am2[W], ok[W], mv[W], vol_free[W], shift_on[W], mlj[W];
   alignas(64) double mass[W], q_old[W], de[W], dte[W], ks[W];
-  alignas(64) double face[W], c[W], qv[W], root[W];  // square roots taken a row at a time (sqrt_lanes)
+  // Rows whose square root is taken a row at a time (sqrt_lanes): largest face, wave speed,
+  // omega (Rayleigh quotient), sqrt(qv^2 + c^2); qv kept for the step after the roots.
+  alignas(64) double face[W], c[W], omega[W], cq[W], qv[W];
 };
 
 namespace {
@@ -501,15 +503,15 @@ void SolidGroup::compute_tetra_lanes(std::size_t e0, LaneCount lane_count, const
     const double iv2 = inv_v * inv_v;
     const double trT = (txx + tyy + tzz) * iv2;
     const double TT = (txx * txx + tyy * tyy + tzz * tzz + 2.0 * (txy * txy + tyz * tyz + tzx * tzx)) * iv2 * iv2;
-    b.root[l] = 4.0 * (lambda * trT * trT + 2.0 * G * TT) / (rho * trT);  // omega^2
+    b.omega[l] = 4.0 * (lambda * trT * trT + 2.0 * G * TT) / (rho * trT);  // omega^2
     b.qv[l] = qv;
-    b.dte[l] = qv * qv + c * c;
+    b.cq[l] = qv * qv + c * c;
   }
-  lanes::sqrt_lanes(n, b.root);
-  lanes::sqrt_lanes(n, b.dte);
+  lanes::sqrt_lanes(n, b.omega);
+  lanes::sqrt_lanes(n, b.cq);
   for (std::size_t l = 0; l < n; ++l) {
-    const double l_eff = 2.0 * b.c[l] / b.root[l];
-    const double dte = l_eff / (b.qv[l] + b.dte[l]);
+    const double l_eff = 2.0 * b.c[l] / b.omega[l];
+    const double dte = l_eff / (b.qv[l] + b.cq[l]);
     b.dte[l] = dte;
     b.ks[l] = b.ok[l] * 2.0 * (b.mass[l] / 4.0) / (dte * dte);
   }
