@@ -372,4 +372,14 @@ TEST(DeckDiagnostics, BeginUnits) {
   ASSERT_EQ(b.diagnostics.size(), 1u) << messages(b);
   EXPECT_EQ(format(b.diagnostics[0], b.deck),
             "u.rad:4:1: error: /BEGIN field mass = 'lb': unknown unit (an SI prefix and g, e.g. kg, g, Mg)");
+  // The factors to the base unit (the solver converts OpenRadioss's 10 kHz default of F_cut).
+  EXPECT_EQ(hbm::deck::unit_factor("ms", 's'), 1e-3);
+  EXPECT_EQ(hbm::deck::unit_factor("mus", 's'), 1e-6);
+  EXPECT_EQ(hbm::deck::unit_factor("s", 's'), 1.0);
+  EXPECT_EQ(hbm::deck::unit_factor("kg", 'g'), 1e3);
+  EXPECT_EQ(hbm::deck::unit_factor("Mg", 'g'), 1e6);
+  EXPECT_EQ(hbm::deck::unit_factor("dam", 'm'), 1e1);
+  EXPECT_FALSE(hbm::deck::unit_factor("lb", 'g').has_value());
+  EXPECT_FALSE(hbm::deck::unit_factor("ms", 'g').has_value());
+  EXPECT_FALSE(hbm::deck::unit_factor("", 's').has_value());
 }

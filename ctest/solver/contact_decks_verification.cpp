@@ -363,7 +363,7 @@ TEST(ContactDecks, RigidWallWithoutGroupOrSearchDistanceHoldsNoNode) {
   EXPECT_NE(log.find("Dsearch = 0 and no grnd_ID1"), std::string::npos) << log;
   const ThTable w = read_th(dir / "out" / (name + "_TH_RWALL_2.csv"));
   ASSERT_FALSE(w.rows.empty());
-  for (const std::string& f : {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"})
+  for (const char* f : {"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"})
     for (double v : w.column(w.col(f))) EXPECT_EQ(v, 0.0) << f;
   // Block 3 in free fall: VZ = -g t at every node (g = 1 mm/ms^2 in this deck).
   const ThTable c = read_th(dir / "out" / (name + "_TH_NODE_3.csv"));

@@ -4,6 +4,7 @@
 // tests of the Belytschko-Tsay quad and the CST+DKT triangle, and objectivity under a
 // large rigid rotation.
 #include "shells_harness.hpp"
+#include "shells/shell_through_thickness.hpp"
 
 #include <gtest/gtest.h>
 
@@ -136,6 +137,57 @@ TEST(ShellMaterialPoint, FailureFlagAtEpsPMax) {
   ASSERT_GE(failed_at, 0);
   EXPECT_GE(epsp, 0.05);
   EXPECT_LT(epsp, 0.05 + 1e-4);
+}
+
+// LAW36 with rate curves on a shell: one rate per element, the energy equivalent of the
+// membrane and bending increments (element_strain_rate: for pure bending the thickness mean
+// of 4/3 (z dk)^2 is dk^2 t^2 / 9), filtered at F_cut; every point yields at that rate.
+TEST(ShellMaterialPoint, Law36ElementRateIsFilteredAndSharedByThePoints) {
+  const double t = 2.0, dt = 1.5e-3, dk = 2e-5;  // curvature increment per step [1/mm]
+  // Thickness mean by the 10-point Gauss rule (exact for the quadratic z^2).
+  ShellSection gauss;
+  ASSERT_TRUE(gauss.set_points(10));
+  double mean = 0;
+  for (int p = 0; p < 10; ++p) {
+    const double z = gauss.zeta[p] * t / 2;
+    mean += 0.5 * gauss.weight[p] * 4.0 / 3.0 * (z * dk) * (z * dk);
+  }
+  const double dem0[3] = {0, 0, 0}, dk1[3] = {dk, 0, 0};
+  const double r = std::sqrt(mean) / dt;
+  EXPECT_NEAR(element_strain_rate(dem0, dk1, t, dt), r, 1e-12 * r);
+
+  const hbm::solver::FunctionCurve low(1, "static", {0.0, 1.0}, {0.3, 0.3});
+  const hbm::solver::FunctionCurve high(2, "fast", {0.0, 1.0}, {0.6, 0.6});
+  ShellMaterial m = steel_elastic();
+  m.law = ShellLaw::Tabulated;
+  m.plasticity.kind = hbm::solver::PlasticityLaw::Kind::Tabulated;
+  m.plasticity.tab.curves = {&low, &high};
+  m.plasticity.tab.scales = {1.0, 1.0};
+  m.plasticity.tab.rates = {0.0, 2.0 * r};
+  m.plasticity.rate_filter = 2.0 * std::numbers::pi * 0.5;  // F_cut 0.5 /ms
+  ASSERT_TRUE(m.check().empty());
+  ShellSection sec;
+  ASSERT_TRUE(sec.set_points(5));
+  double stress[15] = {}, epsp[5] = {}, state = 0;
+  const double a = m.plasticity.rate_filter * dt;
+  int checked = 0;
+  for (int n = 1; n <= 600; ++n) {
+    const double rate = hbm::solver::filtered_strain_rate(m.plasticity.rate_filter, dt,
+                                                          element_strain_rate(dem0, dk1, t, dt), state);
+    const double rn = r * (1.0 - std::pow(1.0 - a, n));
+    ASSERT_NEAR(rate, rn, 1e-12 * r);
+    ThicknessResult tr;
+    integrate_thickness(m, sec, t, dem0, dk1, dt, stress, epsp, nullptr, tr, rate);
+    const double sy = 0.3 + 0.3 * rn / (2.0 * r);
+    for (int p = 0; p < 5; ++p) {
+      if (epsp[p] <= 0) continue;  // elastic so far (the mid-surface point always)
+      const double* sp = stress + 3 * p;
+      const double vm = std::sqrt(sp[0] * sp[0] + sp[1] * sp[1] - sp[0] * sp[1] + 3 * sp[2] * sp[2]);
+      EXPECT_NEAR(vm, sy, 1e-6 * sy) << "step " << n << " point " << p;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(ShellMaterialPoint, ViscoelasticEquibiaxialInstantaneousAndRelaxed) {

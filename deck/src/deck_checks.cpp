@@ -560,15 +560,7 @@ class Checker {
 
   // Radioss unit names: an SI prefix (y z a f p n mu m c d da h k M G T P E Z Y, or none)
   // followed by g (mass), m (length) or s (time), as in the reference guide's /BEGIN.
-  static bool unit_ok(std::string_view t, char base) {
-    if (t.empty() || t.back() != base) return false;
-    const std::string_view prefix = t.substr(0, t.size() - 1);
-    static constexpr std::string_view prefixes[] = {"",  "y", "z", "a", "f", "p", "n", "mu", "m", "c", "d",
-                                                    "da", "h", "k", "M", "G", "T", "P", "E",  "Z", "Y"};
-    for (std::string_view p : prefixes)
-      if (prefix == p) return true;
-    return false;
-  }
+  static bool unit_ok(std::string_view t, char base) { return unit_factor(t, base).has_value(); }
 
   void units(const Card& c) {
     for (std::size_t line = 1; line <= 2; ++line) {

@@ -275,9 +275,10 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         int_field("N_funct", 0, 1, 5, 0, "number of yield curves (1..5)", Dimension::Count),
         int_field("Fsmooth", 10, 0, 1, 0, "strain rate smoothing flag"),
         real_field("Chard", 20, Dimension::None, kUnit, 0, "hardening coefficient (0 isotropic)"),
-        real_field("F_cut", 40, Dimension::Frequency, kNonNegative, 0, "strain rate cutoff frequency"),
+        real_field("F_cut", 40, Dimension::Frequency, kNonNegative, 0,
+                   "strain rate filter cutoff frequency (0 = 10 kHz with two or more curves)"),
         real_field("EPS_f", 60, Dimension::Strain, kNonNegative, 0, "failure strain"),
-        int_field("Vp", 90, 0, 2, 0, "strain rate choice flag"),
+        int_field("Vp", 90, 0, 2, 0, "strain rate choice flag (0, 2 equivalent strain rate; 1 plastic strain rate)"),
     }));
     k.lines.push_back(line("pressure", {
         fct("fct_IDp", 0, "yield scale factor vs pressure"),

@@ -17,6 +17,7 @@
 // m (t^2 + A) / 12 per node; shell nodes carry rotational DOFs.
 // Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
+#include "material/law36_card.hpp"
 #include "shells/shell_element_group.hpp"
 
 #include <cmath>
@@ -84,35 +85,7 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
     out.law = ShellLaw::Tabulated;
     out.E = m.real(1, "E");
     out.nu = m.real(1, "nu");
-    if (m.real(1, "EPS_t") != 0.0 || m.real(1, "EPS_m") != 0.0 || m.real(2, "Chard") != 0.0 ||
-        m.integer(3, "fct_IDp") != 0 || m.integer(3, "fct_IDE") != 0) {
-      ctx.error(m, "LAW36 on shells supports E, nu, EPS_p_max and yield curves only "
-                   "(EPS_t, EPS_m, Chard, fct_IDp, fct_IDE must be 0)");
-      return false;
-    }
-    auto& pl = out.plasticity;
-    pl.kind = PlasticityLaw::Kind::Tabulated;
-    const double epm = m.real(1, "EPS_p_max");
-    pl.eps_p_max = epm > 0 ? epm : inf;
-    const auto n = m.integer(2, "N_funct");
-    for (int k = 1; k <= n; ++k) {
-      const std::string f = cat("fct_ID", num(k));
-      const std::int64_t fid = m.integer(4, f);
-      const FunctionCurve* fc = ctx.function(fid);
-      if (!fc) {
-        ctx.error(m, m.lines.size() > 4 ? m.lines[4] : m.lines.back(), f,
-                  cat("no function ", num(fid)));
-        return false;
-      }
-      pl.tab.curves.push_back(fc);
-      pl.tab.scales.push_back(m.real(5, cat("Fscale", num(k))));
-      pl.tab.rates.push_back(m.real(6, cat("EPS_dot", num(k))));
-    }
-    for (std::size_t k = 1; k < pl.tab.rates.size(); ++k)
-      if (!(pl.tab.rates[k] > pl.tab.rates[k - 1])) {
-        ctx.error(m, "strain rates EPS_dot1..N must increase");
-        return false;
-      }
+    if (!read_law36_hardening(ctx, m, out.plasticity)) return false;
   } else {
     ctx.error(m, cat("material ", kw, " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36)"));
     return false;

@@ -13,6 +13,7 @@ void ShellGroupData::allocate() {
   thick0 = thick;
   stress.assign(n * np * 3, 0.0);
   epsp.assign(n * np, 0.0);
+  eps_rate.assign(mat.plastic() && mat.plasticity.rate_filter > 0.0 ? n : 0, 0.0);
   hist.assign(n * np * static_cast<std::size_t>(mat.n_history()), 0.0);
   extra.assign(n * static_cast<std::size_t>(extra_per_element()), 0.0);
   n_failed.assign(n, 0);

@@ -127,7 +127,7 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
 }  // namespace
 
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt, PointStress& s,
-                         double& epsp, double* hist) {
+                         double& epsp, double* hist, double element_rate) {
   if (m.law == ShellLaw::Viscoelastic) {
     // sigma = 2 Ginf e + h + K eps_v 1, h_{n+1} = E1 h_n + 2 (G0 - Ginf) phi de,
     // E1 = exp(-beta dt), phi = (1 - E1) / (beta dt); dezz from sigma_zz = 0.
@@ -164,7 +164,9 @@ PointResult update_point(const ShellMaterial& m, const double de[3], double dt, 
     return res;
   }
   double epsdot = 0;
-  if (dt > 0 && m.rate_dependent()) {
+  if (element_rate >= 0.0) {
+    epsdot = element_rate;
+  } else if (dt > 0 && m.rate_dependent()) {
     const double eq2 = 4.0 / 3.0 * (de[0] * de[0] + de[1] * de[1] + de[0] * de[1]) +
                        de[2] * de[2] / 3.0;
     epsdot = std::sqrt(eq2) / dt;

@@ -7,7 +7,9 @@
 //          strain-rate term c ln(epsdot/epsdot0) when c > 0.
 //  - LAW36 J2 plasticity with tabulated yield curves sigma_y(eps_p) per strain rate.
 //    The hardening laws are the engine's (hbm/solver/material/hardening.hpp, shared with
-//    the solids; the rate is the equivalent total strain rate of the point). Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
+//    the solids). The rate: LAW2, the point's equivalent strain rate over the step; LAW36
+//    with two or more curves, the element's rate (element_strain_rate) filtered at F_cut,
+//    as OpenRadioss does. Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
 //    algorithm for plane stress elastoplasticity", IJNME 22: 649-670 (Simo & Hughes,
 //    Computational Inelasticity, section 3.4): the trial stress is relaxed along the
 //    plane-stress projected flow direction and a scalar Newton iteration (safeguarded by
@@ -94,7 +96,19 @@ struct PointResult {
 // de = (dexx, deyy, gamma_xy) (engineering shear) over a step dt.
 // `epsp` is the point's equivalent plastic strain (updated), `hist` its n_history()
 // values. A point already failed (epsp >= eps_p_max) must not be passed in.
+// element_rate >= 0: the strain rate of the yield stress, one for all points of the element
+// (the filtered rate of element_strain_rate); < 0: the point's own rate over the step.
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt,
-                         PointStress& s, double& epsp, double* hist);
+                         PointStress& s, double& epsp, double* hist, double element_rate = -1.0);
+
+// Equivalent strain rate of a shell element over a step (OpenRadioss mulawc.F, ISRATE 1, the
+// energy equivalent of membrane plus bending): eps^2 = 4/3 (exx^2 + eyy^2 + exx eyy + gxy^2/4)
+// + t^2/9 (kxx^2 + kyy^2 + kxx kyy + kxy^2/4), from the membrane increments dem (engineering
+// shear) and curvature increments dk; rate = eps / dt.
+inline double element_strain_rate(const double dem[3], const double dk[3], double t, double dt) {
+  const double m2 = 4.0 / 3.0 * (dem[0] * dem[0] + dem[1] * dem[1] + dem[0] * dem[1] + 0.25 * dem[2] * dem[2]);
+  const double k2 = (dk[0] * dk[0] + dk[1] * dk[1] + dk[0] * dk[1] + 0.25 * dk[2] * dk[2]) * t * t / 9.0;
+  return std::sqrt(m2 + k2) / dt;
+}
 
 }  // namespace hbm::solver::shells

@@ -37,9 +37,14 @@ struct ThicknessLanes {
         const auto e = static_cast<std::size_t>(idx[l]);
         const double dm[3] = {dem[0][l], dem[1][l], dem[2][l]};
         const double dc[3] = {dk[0][l], dk[1][l], dk[2][l]};
+        // LAW36 with rate curves: one filtered rate for the element's points (OpenRadioss).
+        double rate = -1.0;
+        if (!g.eps_rate.empty() && dt > 0.0)
+          rate = filtered_strain_rate(mat.plasticity.rate_filter, dt, element_strain_rate(dm, dc, t[l], dt),
+                                      g.eps_rate[e]);
         ThicknessResult tr;
         integrate_thickness(mat, sec, t[l], dm, dc, dt, &g.stress[e * np * 3], &g.epsp[e * np],
-                            nh ? &g.hist[e * np * static_cast<std::size_t>(nh)] : nullptr, tr);
+                            nh ? &g.hist[e * np * static_cast<std::size_t>(nh)] : nullptr, tr, rate);
         for (int c = 0; c < 3; ++c) {
           N[c][l] = tr.N[c];
           M[c][l] = tr.M[c];

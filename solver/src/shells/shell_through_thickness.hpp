@@ -4,7 +4,8 @@
 // point's stress is updated in plane stress, and the resultants are
 //   N = int sigma dz = t/2 sum w_p sigma_p,   M = int z sigma dz = (t/2)^2 sum w_p zeta_p sigma_p.
 // A point whose plastic strain reaches EPS_p_max keeps the work done up to failure in the
-// internal energy and carries no stress afterwards.
+// internal energy and carries no stress afterwards. element_rate >= 0 is the strain rate of
+// every point's yield stress (LAW36 with rate curves), < 0 each point's own.
 #pragma once
 
 #include "shells/shell_material.hpp"
@@ -22,7 +23,8 @@ struct ThicknessResult {
 
 inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, double t,
                                 const double dem[3], const double dk[3], double dt,
-                                double* stress, double* epsp, double* hist, ThicknessResult& r) {
+                                double* stress, double* epsp, double* hist, ThicknessResult& r,
+                                double element_rate = -1.0) {
   const double ht = 0.5 * t;
   const int nh = m.n_history();
   const double eps_fail = m.eps_p_max();
@@ -45,7 +47,7 @@ inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, d
       st.sxy += c * 0.5 * (1.0 - nu) * de[2];
       pr.dezz = -nu / E * (st.sxx + st.syy - S_old);
     } else {
-      pr = update_point(m, de, dt, st, epsp[p], hist + nh * p);
+      pr = update_point(m, de, dt, st, epsp[p], hist + nh * p, element_rate);
     }
     const double w = s.weight[p] * ht;
     r.dE += 0.5 * w * ((sp[0] + st.sxx) * de[0] + (sp[1] + st.syy) * de[1] + (sp[2] + st.sxy) * de[2]);

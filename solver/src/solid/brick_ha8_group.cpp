@@ -82,6 +82,7 @@ Index BrickHa8Group::initialize(const NodalState& nodes) {
   sig.assign(6 * np, 0.0);
   hist.assign(material.viscoelastic() ? 6 * np : 0, 0.0);
   eps_p.assign(material.plastic() ? np : 0, 0.0);
+  eps_rate.assign(material.plasticity.rate_filter > 0.0 ? np : 0, 0.0);
   e_int.assign(n, 0.0);
   q_bulk.assign(n, 0.0);
   alive.assign(n, 1);
@@ -258,7 +259,8 @@ void BrickHa8Group::compute_chunk(std::size_t chunk, const StepContext& step, co
         for (int k = 0; k < 6; ++k) h[k] = hist[at(k, g, e)];
       for (int k = 0; k < 6; ++k) s_old[k] = s_el[k] + h[k];
       if (dt > 0.0) {
-        const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr};
+        const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr,
+                                 eps_rate.empty() ? nullptr : &eps_rate[static_cast<std::size_t>(g) * n_elements + e]};
         update_solid_stress(mat, st, d, wxy, wyz, wzx, dt, s_new);
         for (int k = 0; k < 6; ++k) sig[at(k, g, e)] = s_el[k];
         if (visco)

@@ -3,6 +3,7 @@
 // material LAW1/2/34/36 from the part, hourglass and bulk viscosity from /PROP/TYPE14.
 // Lumped mass rho V0 / n per element node. Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
+#include "material/law36_card.hpp"
 #include "solid/brick_ha8_group.hpp"
 #include "solid/solid_group.hpp"
 
@@ -60,28 +61,7 @@ bool read_solid_material(BuildContext& ctx, const hbm::deck::Card& m, SolidMater
   } else if (kw == "/MAT/LAW36") {
     out.law = SolidLaw::Tabulated;
     out.set_elastic(m.real(1, "E"), m.real(1, "nu"));
-    auto& pl = out.plasticity;
-    pl.kind = PlasticityLaw::Kind::Tabulated;
-    const double epm = m.real(1, "EPS_p_max");
-    pl.eps_p_max = epm > 0 ? epm : std::numeric_limits<double>::infinity();
-    const auto n = m.integer(2, "N_funct");
-    for (int k = 1; k <= n; ++k) {
-      const std::string f = "fct_ID" + std::to_string(k);
-      const std::int64_t fid = m.integer(4, f);
-      const FunctionCurve* fc = ctx.function(fid);
-      if (!fc) {
-        ctx.error(m, m.lines.size() > 4 ? m.lines[4] : m.lines.back(), f, "no function " + std::to_string(fid));
-        return false;
-      }
-      pl.tab.curves.push_back(fc);
-      pl.tab.scales.push_back(m.real(5, "Fscale" + std::to_string(k)));
-      pl.tab.rates.push_back(m.real(6, "EPS_dot" + std::to_string(k)));
-    }
-    for (std::size_t k = 1; k < pl.tab.rates.size(); ++k)
-      if (!(pl.tab.rates[k] > pl.tab.rates[k - 1])) {
-        ctx.error(m, "strain rates EPS_dot1..N must increase");
-        return false;
-      }
+    if (!read_law36_hardening(ctx, m, out.plasticity)) return false;
   } else {
     ctx.error(m, std::string("material ") + std::string(kw) + " is not supported on solid elements (LAW1, LAW2, LAW34, LAW36)");
     return false;

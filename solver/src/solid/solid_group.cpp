@@ -231,6 +231,7 @@ Index SolidGroup::initialize(const NodalState& nodes) {
   if (material.viscoelastic())
     for (auto& a : hist) a.assign(n, 0.0);
   eps_p.assign(material.plastic() ? n : 0, 0.0);
+  eps_rate.assign(material.plasticity.rate_filter > 0.0 ? n : 0, 0.0);
   e_int.assign(n, 0.0);
   e_hg.assign(n, 0.0);
   if (nodes_per_element == 8)
@@ -639,7 +640,8 @@ void SolidGroup::compute_tetra_scalar(std::size_t e_begin, std::size_t e_end, co
     double s_old[6], s_new[6];
     for (int k = 0; k < 6; ++k) s_old[k] = s_el[k] + h[k];
     if (dt > 0.0) {
-      const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr};
+      const SolidPointState st{s_el, visco ? h : nullptr, plastic ? &ep : nullptr,
+                               eps_rate.empty() ? nullptr : &eps_rate[e]};
       if (nodal_pressure.enabled && !frozen) {
         // Deviator from the element, mean stress K ln J from the nodes (nodal_pressure_average.hpp).
         // A switched tetra goes on from its stress at the switch with its own strain rate
@@ -856,7 +858,7 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
       double s[6], out[6], ep = eps_p[e0 + l];
       for (int k = 0; k < 6; ++k) s[k] = b.sig[k][l];
       const double dd[6] = {b.d[0][l], b.d[1][l], b.d[2][l], b.d[3][l], b.d[4][l], b.d[5][l]};
-      const SolidPointState st{s, nullptr, &ep};
+      const SolidPointState st{s, nullptr, &ep, eps_rate.empty() ? nullptr : &eps_rate[e0 + l]};
       update_solid_stress(mat, st, dd, b.w[0][l], b.w[1][l], b.w[2][l], dt, out);
       for (int k = 0; k < 6; ++k) {
         b.sig[k][l] = s[k];

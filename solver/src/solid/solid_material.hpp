@@ -71,6 +71,7 @@ struct SolidPointState {
   double* sig;       // 6 Cauchy stress (LAW34: elastic part 2 Ginf e - p I)
   double* hist;      // 6 hereditary deviatoric stress h (LAW34 only), else nullptr
   double* eps_p;     // equivalent plastic strain (LAW2/36), else nullptr
+  double* eps_rate = nullptr;  // filtered strain rate (LAW36 with rate_filter > 0), else nullptr
 };
 
 // One step of the LAW1 / LAW34 hypoelastic update at a point as the lane kernels do it, the
@@ -132,11 +133,13 @@ inline double update_solid_stress(const SolidMaterial& m, const SolidPointState&
       for (int k = 0; k < 3; ++k) s[k] += m.K * dv;
       const double p = (s[0] + s[1] + s[2]) / 3.0;
       double dev[6] = {s[0] - p, s[1] - p, s[2] - p, s[3], s[4], s[5]};
-      // Equivalent total deviatoric strain rate sqrt(2/3 D':D') for the rate term.
-      const double rate = (dt > 0.0)
+      // Equivalent deviatoric strain rate sqrt(2/3 D':D') for the rate term (OpenRadioss
+      // mstrain_rate.F, IDEV 1, as its LAW36 solids use), filtered when the law says so.
+      double rate = (dt > 0.0)
           ? std::sqrt(2.0 / 3.0 * (de[0] * de[0] + de[1] * de[1] + de[2] * de[2] +
                                    2.0 * (de[3] * de[3] + de[4] * de[4] + de[5] * de[5]))) / dt
           : 0.0;
+      if (st.eps_rate && dt > 0.0) rate = filtered_strain_rate(m.plasticity.rate_filter, dt, rate, *st.eps_rate);
       dl = radial_return_3d(m.plasticity, m.G, dev, *st.eps_p, rate);
       for (int k = 0; k < 3; ++k) s[k] = dev[k] + p;
       for (int k = 3; k < 6; ++k) s[k] = dev[k];

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,6 +67,10 @@ struct Card {
 struct Units {
   std::string mass = "kg", length = "mm", time = "ms";  // work units from /BEGIN
 };
+
+// Factor of a Radioss unit name (an SI prefix and `base`: 'g', 'm' or 's') to its base unit:
+// unit_factor("ms", 's') = 1e-3, unit_factor("kg", 'g') = 1e3; none if the name is not one.
+std::optional<double> unit_factor(std::string_view name, char base);
 
 struct Deck {
   Section section = Section::Starter;

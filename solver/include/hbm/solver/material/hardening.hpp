@@ -36,6 +36,9 @@ struct PlasticityLaw {
   JohnsonCookHardening jc;
   TabulatedHardening tab;
   double eps_p_max = std::numeric_limits<double>::infinity();  // failure: element deleted
+  // Strain-rate filter 2 pi F_cut [1/time] (OpenRadioss PM(9)); 0: the rate of the step is
+  // used as it is. Set for LAW36 with two or more yield curves (law36_card.hpp).
+  double rate_filter = 0;
   double yield_stress(double eps_p, double rate) const {
     return kind == Kind::JohnsonCook ? jc.yield_stress(eps_p, rate) : tab.yield_stress(eps_p, rate);
   }
@@ -43,6 +46,16 @@ struct PlasticityLaw {
     return kind == Kind::JohnsonCook ? jc.slope(eps_p, rate) : tab.slope(eps_p, rate);
   }
 };
+
+// Exponential average of the equivalent strain rate (OpenRadioss mstrain_rate.F):
+// r_n = a r + (1 - a) r_{n-1}, a = min(1, 2 pi F_cut dt): a first-order low-pass of cutoff
+// F_cut on the step's rate r, which in an explicit run carries the element's vibration at
+// every cycle. `state` holds r_{n-1} and receives r_n, which is returned.
+inline double filtered_strain_rate(double rate_filter, double dt, double rate, double& state) {
+  const double a = rate_filter * dt < 1.0 ? rate_filter * dt : 1.0;
+  state = a * rate + (1.0 - a) * state;
+  return state;
+}
 
 // 3D radial return (Simo & Hughes 1998, box 3.2) for J2 plasticity with isotropic
 // hardening. In: trial deviatoric stress s[6] (xx yy zz xy yz zx) [stress], shear
