@@ -69,3 +69,26 @@ TEST(MaterialStrainRateFilter, SolidYieldStressFollowsTheFilteredRate) {
   }
   EXPECT_NEAR(std::sqrt(3.0) * out[3], 3e-4 + 3e-4 * r / 0.05, 1e-9);
 }
+
+// Johnson-Cook SIG_max0 and the rate term f = 1 + c ln(rate / eps_dot0) (OpenRadioss m2law.F):
+// ICC 0/1 caps the yield at SIG_max0 f, ICC 2 at SIG_max0. a = 1, b = 0, c = 0.1, rate e^2
+// eps_dot0: f = 1.2; SIG_max0 = 1.1 -> yield 1.2 (ICC 1), 1.1 (ICC 2).
+TEST(MaterialStrainRateFilter, JohnsonCookSigMaxFollowsIcc) {
+  JohnsonCookHardening jc;
+  jc.a = 1.0;
+  jc.b = 0.0;
+  jc.c = 0.1;
+  jc.eps_dot0 = 1.0;
+  jc.sig_max = 1.1;
+  const double rate = std::exp(2.0);
+  EXPECT_NEAR(jc.yield_stress(0.01, rate), 1.2, 1e-12);
+  jc.rate_scales_sig_max = false;
+  EXPECT_NEAR(jc.yield_stress(0.01, rate), 1.1, 1e-12);
+  // With hardening, the slope is 0 once capped: a + b eps_p^n = 1 + 0.2 sqrt(0.25) = 1.1.
+  jc.b = 0.2;
+  jc.n = 0.5;
+  jc.rate_scales_sig_max = true;
+  EXPECT_NEAR(jc.yield_stress(0.25, rate), 1.1 * 1.2, 1e-12);
+  EXPECT_GT(jc.slope(0.2, rate), 0.0);
+  EXPECT_EQ(jc.slope(0.3, rate), 0.0);
+}

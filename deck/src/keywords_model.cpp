@@ -229,9 +229,9 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     k.lines.push_back(line("strain rate", {
         real_field("c", 0, Dimension::None, kNonNegative, 0, "strain rate coefficient"),
         real_field("EPS_DOT_0", 20, Dimension::StrainRate, kNonNegative, 0, "reference strain rate"),
-        int_field("ICC", 40, 0, 2, 0, "strain rate computation flag"),
-        int_field("Fsmooth", 50, 0, 1, 0, "strain rate smoothing flag"),
-        real_field("F_cut", 60, Dimension::Frequency, kNonNegative, 0, "strain rate cutoff frequency"),
+        int_field("ICC", 40, 0, 2, 0, "SIG_max0 and the rate term (0, 1 scaled by it; 2 not)"),
+        int_field("Fsmooth", 50, 0, 1, 0, "strain rate smoothing flag (OpenRadioss filters by F_cut alone)"),
+        real_field("F_cut", 60, Dimension::Frequency, kNonNegative, 0, "strain rate filter cutoff frequency"),
     }, true));
     k.lines.push_back(line("temperature", {
         real_field("m", 0, Dimension::None, kNonNegative, 0, "temperature exponent"),

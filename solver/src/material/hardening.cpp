@@ -14,16 +14,18 @@ static double jc_rate_factor(double c, double eps_dot0, double rate) {
 }
 
 double JohnsonCookHardening::yield_stress(double eps_p, double rate) const {
-  const double s = (a + (eps_p > 0.0 ? b * std::pow(eps_p, n) : 0.0)) * jc_rate_factor(c, eps_dot0, rate);
-  return std::min(s, sig_max);
+  const double f = jc_rate_factor(c, eps_dot0, rate);
+  const double s = (a + (eps_p > 0.0 ? b * std::pow(eps_p, n) : 0.0)) * f;
+  return std::min(s, rate_scales_sig_max ? sig_max * f : sig_max);
 }
 
 double JohnsonCookHardening::slope(double eps_p, double rate) const {
   if (b == 0.0) return 0.0;
   const double ep = std::max(eps_p, 1e-12);
+  const double f = jc_rate_factor(c, eps_dot0, rate);
   const double unscaled = a + b * std::pow(ep, n);
-  if (unscaled * jc_rate_factor(c, eps_dot0, rate) >= sig_max) return 0.0;
-  return b * n * std::pow(ep, n - 1.0) * jc_rate_factor(c, eps_dot0, rate);
+  if (unscaled * f >= (rate_scales_sig_max ? sig_max * f : sig_max)) return 0.0;
+  return b * n * std::pow(ep, n - 1.0) * f;
 }
 
 // Index of the two curves bracketing `rate` and the weight of the upper one.

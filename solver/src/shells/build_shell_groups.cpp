@@ -17,6 +17,7 @@
 // m (t^2 + A) / 12 per node; shell nodes carry rotational DOFs.
 // Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
+#include "material/law2_card.hpp"
 #include "material/law36_card.hpp"
 #include "shells/shell_element_group.hpp"
 
@@ -47,7 +48,6 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
   const std::string_view kw = m.keyword();
   out.id = m.id;
   out.rho = m.real(0, "rho");
-  const double inf = std::numeric_limits<double>::infinity();
   if (kw == "/MAT/LAW1") {
     out.law = ShellLaw::Elastic;
     out.E = m.real(1, "E");
@@ -56,21 +56,7 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
     out.law = ShellLaw::JohnsonCook;
     out.E = m.real(1, "E");
     out.nu = m.real(1, "nu");
-    if (m.integer(1, "Iflag") != 0) {
-      ctx.error(m, "Iflag != 0 (yield/UTS input) is not supported on shells; give a, b, n");
-      return false;
-    }
-    auto& pl = out.plasticity;
-    pl.kind = PlasticityLaw::Kind::JohnsonCook;
-    pl.jc.a = m.real(2, "a");
-    pl.jc.b = m.real(2, "b");
-    pl.jc.n = m.real(2, "n");
-    const double epm = m.real(2, "EPS_p_max");
-    pl.eps_p_max = epm > 0 ? epm : inf;
-    const double smax = m.real(2, "SIG_max0");
-    pl.jc.sig_max = smax > 0 ? smax : inf;
-    pl.jc.c = m.real(3, "c");
-    pl.jc.eps_dot0 = m.real(3, "EPS_DOT_0");
+    if (!read_law2_hardening(ctx, m, out.plasticity)) return false;
   } else if (kw == "/MAT/LAW34") {
     out.law = ShellLaw::Viscoelastic;
     out.K = m.real(1, "K");

@@ -63,9 +63,10 @@ struct ShellMaterial {
       double f = 1.0;
       if (jc.c > 0.0 && epsdot > jc.eps_dot0) f = 1.0 + jc.c * std::log(epsdot / jc.eps_dot0);
       const double sy = (jc.a + (eps_p > 0.0 ? jc.b * pw : 0.0)) * f;
-      if (sy >= jc.sig_max) {
+      const double cap = jc.rate_scales_sig_max ? jc.sig_max * f : jc.sig_max;
+      if (sy >= cap) {
         slope = 0.0;
-        return jc.sig_max;
+        return cap;
       }
       slope = jc.b * jc.n * pw / ep * f;
       return sy;

@@ -3,6 +3,7 @@
 // material LAW1/2/34/36 from the part, hourglass and bulk viscosity from /PROP/TYPE14.
 // Lumped mass rho V0 / n per element node. Registered in solver/src/build/builders.def.
 #include "hbm/solver/build_context.hpp"
+#include "material/law2_card.hpp"
 #include "material/law36_card.hpp"
 #include "solid/brick_ha8_group.hpp"
 #include "solid/solid_group.hpp"
@@ -27,25 +28,7 @@ bool read_solid_material(BuildContext& ctx, const hbm::deck::Card& m, SolidMater
   } else if (kw == "/MAT/LAW2") {
     out.law = SolidLaw::JohnsonCook;
     out.set_elastic(m.real(1, "E"), m.real(1, "nu"));
-    if (m.integer(1, "Iflag") != 0) {
-      ctx.error(m, "Iflag != 0 (yield/UTS input) is not supported; give a, b, n");
-      return false;
-    }
-    auto& pl = out.plasticity;
-    pl.kind = PlasticityLaw::Kind::JohnsonCook;
-    pl.jc.a = m.real(2, "a");
-    pl.jc.b = m.real(2, "b");
-    pl.jc.n = m.real(2, "n");
-    const double epm = m.real(2, "EPS_p_max");
-    pl.eps_p_max = epm > 0 ? epm : std::numeric_limits<double>::infinity();
-    const double smax = m.real(2, "SIG_max0");
-    pl.jc.sig_max = smax > 0 ? smax : std::numeric_limits<double>::infinity();
-    pl.jc.c = m.real(3, "c");
-    pl.jc.eps_dot0 = m.real(3, "EPS_DOT_0");
-    if (pl.jc.c > 0 && !(pl.jc.eps_dot0 > 0)) {
-      ctx.error(m, "c > 0 needs EPS_DOT_0 > 0");
-      return false;
-    }
+    if (!read_law2_hardening(ctx, m, out.plasticity)) return false;
   } else if (kw == "/MAT/LAW34") {
     out.law = SolidLaw::Viscoelastic;
     const double G0 = m.real(2, "G0"), Ginf = m.real(2, "Ginf");

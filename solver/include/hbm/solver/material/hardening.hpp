@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic hardening laws shared by solids (3D radial return, here) and shells (plane
 // stress return, in shells/): yield stress sigma_y(eps_p, eps_p_dot) and its slope
-// d sigma_y / d eps_p. LAW2 Johnson-Cook (without temperature):
-//   sigma_y = min( (a + b eps_p^n) (1 + c ln(max(eps_dot / eps_dot0, 1))), sig_max )
+// d sigma_y / d eps_p. LAW2 Johnson-Cook (without temperature), rate term
+// f = 1 + c ln(max(eps_dot / eps_dot0, 1)):
+//   sigma_y = min( (a + b eps_p^n) f, sig_max f )   (ICC 0, 1: OpenRadioss m2law.F)
+//   sigma_y = min( (a + b eps_p^n) f, sig_max )     (ICC 2)
 // LAW36 tabulated: sigma_y = Fscale * f_i(eps_p), interpolated linearly in strain rate
 // between the curves given for increasing rates (one curve = rate independent).
 #pragma once
@@ -18,6 +20,7 @@ struct JohnsonCookHardening {
   double a = 0, b = 0, n = 1;       // a [stress], b [stress], n [-]
   double c = 0, eps_dot0 = 1;       // rate term; eps_dot0 [1/time]
   double sig_max = std::numeric_limits<double>::infinity();  // [stress]
+  bool rate_scales_sig_max = true;  // ICC 0/1: the cap is sig_max times the rate term; ICC 2: sig_max
   double yield_stress(double eps_p, double eps_p_rate) const;
   double slope(double eps_p, double eps_p_rate) const;
 };

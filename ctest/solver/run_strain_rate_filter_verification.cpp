@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// LAW36 with yield curves at several strain rates, end to end (label verification): the
-// rate between the curves is the element's equivalent strain rate low-pass filtered at
-// F_cut, as OpenRadioss does (hm_read_mat36.F: two or more curves, F_cut 0 -> 10 kHz;
-// mstrain_rate.F / mulawc.F: r_n = a r + (1 - a) r_{n-1}, a = min(1, 2 pi F_cut dt)), not the
-// rate of the step, on solids and shells. Each case pulls an example deck made
-// rate-dependent (curve f at rate 0, 2 f at R) with F_cut = 0.2 /ms (time constant 0.8 ms)
-// to 1 ms: the stress is f(eps_p) (1 + r/R) at the filtered rate r the element holds, which
-// lags the rate of the pull so much that the unfiltered yield would be 5 % higher or more.
+// Strain-rate dependent plasticity read and run as OpenRadioss does, end to end (label
+// verification). LAW36 with yield curves at several strain rates: the rate between the
+// curves is the element's equivalent strain rate low-pass filtered at F_cut
+// (hm_read_mat36.F: two or more curves, F_cut 0 -> 10 kHz; mstrain_rate.F / mulawc.F:
+// r_n = a r + (1 - a) r_{n-1}, a = min(1, 2 pi F_cut dt)), on solids and shells. LAW2
+// (Johnson-Cook) with c > 0 and F_cut > 0: the same filter (hm_read_mat02_jc.F90, m2law.F).
+// Each case pulls an example deck made rate-dependent with F_cut = 0.2 /ms (time constant
+// 0.8 ms) to 1 ms: the stress is the yield at the filtered rate r the element holds, which
+// lags the rate of the pull so much that the unfiltered yield would be clearly higher.
 #include "example_deck_runner.hpp"
 #include "shells/shell_element_group.hpp"
 #include "solid/solid_group.hpp"
@@ -67,7 +68,7 @@ std::vector<std::pair<std::string, std::string>> brick_two_curves(const std::str
 
 }  // namespace
 
-TEST(Law36StrainRate, BrickUsesTheFilteredRate) {
+TEST(StrainRateFilter, Law36BrickUsesTheFilteredRate) {
   const fs::path starter = modified_copy(
       "law36_erosion", "law36_rate_brick", 1.0,
       brick_two_curves("         2         0" + e0 + "  2.000000000000E-01" + e0));
@@ -96,7 +97,7 @@ TEST(Law36StrainRate, BrickUsesTheFilteredRate) {
 // card replaced by LAW36: f = 0.3 + 0.2 eps_p GPa at rate 0, 2 f at R = 0.08 /ms, no failure.
 // In uniaxial plastic flow (eyy = -exx / 2) the element rate sqrt(4/3 (exx^2 + eyy^2 +
 // exx eyy)) / dt is the pull's strain rate.
-TEST(Law36StrainRate, ShellUsesTheFilteredElementRate) {
+TEST(StrainRateFilter, Law36ShellUsesTheFilteredElementRate) {
   const std::string law2 =
       "/MAT/LAW2/1\nsteel JC\n  7.850000000000E-06\n  2.100000000000E+02  3.000000000000E-01         0\n"
       "  3.000000000000E-01  2.000000000000E-01  5.000000000000E-01  1.000000000000E-01" + e0 + "\n";
@@ -136,7 +137,7 @@ TEST(Law36StrainRate, ShellUsesTheFilteredElementRate) {
 // (10 /ms in kg-mm-ms, 1e4 /s in kg-mm-s); one curve is rate independent (no filter); Vp 1 (plastic strain rate)
 // and options this engine does not model (here Chard, kinematic hardening, which solids used
 // to ignore) stop the run with an error naming the field.
-TEST(Law36StrainRate, OptionsAsOpenRadiossReadsThem) {
+TEST(StrainRateFilter, Law36OptionsAsOpenRadiossReadsThem) {
   {
     auto r = run_in_process("law36_erosion");
     ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
@@ -168,4 +169,51 @@ TEST(Law36StrainRate, OptionsAsOpenRadiossReadsThem) {
                               "         1         0  5.000000000000E-01" + e0 + e0, log), 0);
   EXPECT_NE(log.find("Chard"), std::string::npos) << log;
   EXPECT_NE(log.find("kinematic hardening is not supported"), std::string::npos) << log;
+}
+
+// uniaxial_law2 (one brick, a = 3e-4, b = 5e-4 GPa, n = 0.5, pulled at 1.05e-2 mm/ms after a
+// ramp) with c = 0.1, EPS_DOT_0 = 1e-3 /ms, F_cut = 0.2 /ms, to 1 ms: sigma = (a + b eps_p^n)
+// (1 + c ln(r / EPS_DOT_0)) at the filtered rate r (0.5 %), 3 % or more below the yield at the
+// pull's rate.
+TEST(StrainRateFilter, JohnsonCookBrickUsesTheFilteredRate) {
+  const std::string hardening =
+      "  3.000000000000E-04  5.000000000000E-04  5.000000000000E-01" + e0 + e0 + "\n";
+  const std::string rate_line = "  1.000000000000E-01  1.000000000000E-03         0         0  2.000000000000E-01\n";
+  const fs::path starter =
+      modified_copy("uniaxial_law2", "law2_rate_brick", 1.0, {{hardening, hardening + rate_line}});
+  auto r = run_in_process("law2_rate_brick", starter);
+  ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
+  const SolidGroup& g = solid(*r);
+  EXPECT_DOUBLE_EQ(g.material.plasticity.rate_filter, 2.0 * M_PI * 0.2);
+  ASSERT_EQ(g.eps_rate.size(), 1u);
+  const double rate = g.eps_rate[0];
+  const ThTable th = read_th(r->out / "uniaxial_law2_TH_NODE_1.csv");
+  const double L = 1.0 + th.rows.back()[th.col("DX")];
+  const double pull_rate = 1.052631578947E-02 / L;
+  double sig[6];
+  g.stress(0, sig);
+  const double ep = g.eps_p[0];
+  ASSERT_GT(ep, 0.001);
+  const double s0 = 3e-4 + 5e-4 * std::sqrt(ep);
+  auto yield = [&](double rr) { return s0 * (1.0 + 0.1 * std::log(rr / 1e-3)); };
+  std::printf("JC brick: filtered rate %.5f /ms, pull %.5f /ms; stress %.6f, filtered yield %.6f, unfiltered %.6f GPa\n",
+              rate, pull_rate, sig[0], yield(rate), yield(pull_rate));
+  EXPECT_NEAR(sig[0], yield(rate), 0.005 * sig[0]);
+  EXPECT_GT(yield(pull_rate), 1.03 * sig[0]) << "the filter did not lag";
+}
+
+// LAW2 options: c > 0 with F_cut 0 runs with the rate of each step and a warning saying what
+// OpenRadioss does; thermal softening (T_melt and rho0Cp given) stops the run naming T_melt.
+TEST(StrainRateFilter, JohnsonCookOptions) {
+  const std::string hardening =
+      "  3.000000000000E-04  5.000000000000E-04  5.000000000000E-01" + e0 + e0 + "\n";
+  std::string log;
+  EXPECT_EQ(run_modified_deck("uniaxial_law2", "law2_fcut0", hardening,
+                              hardening + "  1.000000000000E-01  1.000000000000E-03\n", log), 0) << log;
+  EXPECT_NE(log.find("F_cut = 0 with c > 0"), std::string::npos) << log;
+  EXPECT_NE(run_modified_deck("uniaxial_law2", "law2_thermal", hardening,
+                              hardening + e0 + e0 + "\n  1.000000000000E+00  1.800000000000E+03  3.500000000000E-03\n",
+                              log), 0);
+  EXPECT_NE(log.find("T_melt"), std::string::npos) << log;
+  EXPECT_NE(log.find("thermal softening"), std::string::npos) << log;
 }
