@@ -415,6 +415,26 @@ TEST(EngineVerification, Law36TabulatedYieldAndErosion) {
   EXPECT_NE(read_text(r->out / "law36_erosion_0001.out").find("element 1 of part 1 'cube' deleted at t = "), std::string::npos);
 }
 
+// Damaged decks found by run_deck_mutation_verification.cpp. A density of 1e30 (a units
+// slip) gives a first stable step of 1.3e15 ms, past the end time at once: the run ends after
+// that cycle (the output schedule used to add its interval 1e16 times: a hang). A bulk
+// viscosity qb of 1e30 makes the stable step collapse (to 1e-27 ms, with the energy error at
+// 1e49 %): the run stops with exit 3 once the step falls below 1e-6 of the first one, naming
+// the element (it used to go on for ever).
+TEST(EngineVerification, DamagedTimeStepsEndTheRun) {
+  std::string log;
+  EXPECT_EQ(run_modified_deck("uniaxial_law2", "huge_step", "  7.850000000000E-06", "        1.000000E+30", log), 0)
+      << log;
+  EXPECT_NE(log.find("NORMAL TERMINATION"), std::string::npos) << log;
+  EXPECT_EQ(run_modified_deck("law36_erosion", "collapsing_step",
+                              "  1.000000000000E-30  1.000000000000E-30  1.000000000000E-01",
+                              "  1.000000000000E-30        1.000000E+30  1.000000000000E-01", log),
+            3)
+      << log;
+  EXPECT_NE(log.find("fell below 1e-06 of the first one"), std::string::npos) << log;
+  EXPECT_NE(log.find("element 1 of part 1 'cube'"), std::string::npos) << log;
+}
+
 // /PROP/TYPE14 Isolid 24 takes the coefficient of its viscous hourglass part from dn (0 ->
 // 0.1) and not from h, as OpenRadioss reads it (hm_read_prop14.F: IHBE 24: CVIS = dn, QH =
 // 0). law34_impact writes h = 0.1 and no dn: with h = 0.05 the run must be the same to the

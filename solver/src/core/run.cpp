@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -158,6 +159,21 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   }
   double next_th = 0.0, next_anim = rc.anim_start;
   const double tol = 1e-9 * rc.t_stop;
+  // The next output time after `t`: the schedule steps by `interval`; a step that jumps
+  // over a million intervals at once (a damaged deck's huge stable step, where the interval
+  // may not even change a time that large) goes straight past t. Ordinary runs only add.
+  auto advance_past = [](double& next, double t, double interval) {
+    if (next > t) return;
+    if ((t - next) / interval > 1e6) {
+      next = std::max(t + interval, std::nextafter(t, std::numeric_limits<double>::infinity()));
+      return;
+    }
+    while (next <= t) next += interval;
+  };
+  // A run whose stable time step has fallen below this fraction of its first one would need
+  // that many times its planned cycles: it is stopped (a damaged deck, a collapsing element).
+  constexpr double kTimeStepCollapse = 1e-6;
+  double dt_first = 0.0;
   const auto wall0 = Clock::now();
   const double cpu0 = process_cpu_seconds();
   double output_seconds = 0.0;
@@ -223,13 +239,27 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       c.stop = StopReason::InvertedElement;
       c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " is not positive and finite at time " + fmt("%.6e", t);
     }
+    if (c.step.cycle == 0) dt_first = c.step.dt_next;
+    if (c.stop == StopReason::None && c.step.dt_next < kTimeStepCollapse * dt_first) {
+      c.stop = StopReason::TimeStepCollapse;
+      std::string by;
+      if (c.dt_group != kNoIndex && c.dt_element != kNoIndex) {
+        const ElementGroup& grp = *model.groups[static_cast<std::size_t>(c.dt_group)];
+        const Part& p = model.parts[static_cast<std::size_t>(grp.part)];
+        by = " (element " + std::to_string(grp.element_id[static_cast<std::size_t>(c.dt_element)]) + " of part " +
+             std::to_string(p.id) + " '" + p.title + "')";
+      }
+      c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " " + tu + by + " fell below " +
+                       fmt("%.0e", kTimeStepCollapse) + " of the first one (" + fmt("%.4e", dt_first) + " " + tu +
+                       ") at time " + fmt("%.6e", t) + " " + tu + ", cycle " + std::to_string(c.step.cycle);
+    }
     const bool stopping = c.stop != StopReason::None;
     // Outputs at t^n.
     const auto o0 = Clock::now();
     if (rc.th_interval > 0 && (t >= next_th - tol || stopping)) {
       sample_switches(t);
       for (auto& w : th) w->write_row(t, c.energies);
-      while (next_th <= t + tol) next_th += rc.th_interval;
+      advance_past(next_th, t + tol, rc.th_interval);
     }
     if (rc.anim_interval > 0 && (t >= next_anim - tol || stopping)) {
       const NodalState& n = model.nodes;
@@ -241,7 +271,7 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       }
       std::string err;
       if (!vtk.write_frame(model, t, vel_out, err)) listing.line("  warning: animation: " + err);
-      while (next_anim <= t + tol) next_anim += rc.anim_interval;
+      advance_past(next_anim, t + tol, rc.anim_interval);
     }
     if (c.step.cycle % rc.print_every == 0 || stopping) {
       if (rc.th_interval <= 0) sample_switches(t);

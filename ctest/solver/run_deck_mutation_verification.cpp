@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Semantic mutation robustness of the whole solver (label verification): example decks
+// that the deck library reads cleanly are damaged in their numbers (a field set to 0, -1,
+// negated, scaled by 1e12 or 1e-12, an id pointed at 999999, two numbers swapped), keeping
+// the fixed columns, so that the damage reaches the builders and the run itself rather
+// than the reader (whose own mutation test, ctest/deck/test_mutations.cpp, garbles the
+// text). Each mutated deck runs through hbm-solver, its end time cut to a tenth. Every run
+// must end normally (0), stop with errors (1) or stop early on a criterion (3): never a
+// crash, an abort, an exception or a sanitizer report. An error run must name the deck
+// file and a line, and leave its output folder empty (outputs appear complete or not at
+// all). Runs still going after 60 s (a damaged deck can ask for a tiny stable time step)
+// are stopped and counted, not failed.
+#include "example_deck_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace hbm::solver::testing;
+
+namespace {
+
+struct Token {
+  std::size_t line, begin, end;  // [begin, end) in the line
+};
+
+bool is_number(const std::string& s) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+
+// Numeric tokens of the data lines (not keywords, comments, /RUN lines or titles).
+std::vector<Token> numeric_tokens(const std::vector<std::string>& lines) {
+  std::vector<Token> out;
+  bool title_next = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& l = lines[i];
+    if (l.empty() || l[0] == '#') continue;
+    if (l[0] == '/') {
+      // Keyword lines; the line after an object keyword with an id is its title.
+      title_next = l.rfind("/RUN/", 0) != 0 && std::count(l.begin(), l.end(), '/') >= 2 && l != "/END";
+      continue;
+    }
+    if (title_next) {
+      title_next = false;
+      continue;
+    }
+    if (i > 0 && lines[i - 1].rfind("/RUN/", 0) == 0) continue;  // the end time
+    std::size_t p = 0;
+    while (p < l.size()) {
+      while (p < l.size() && l[p] == ' ') ++p;
+      std::size_t q = p;
+      while (q < l.size() && l[q] != ' ') ++q;
+      if (q > p && is_number(l.substr(p, q - p))) out.push_back({i, p, q});
+      p = q;
+    }
+  }
+  return out;
+}
+
+// Writes `text` right-aligned to end where the token ends, taking spaces on its left.
+bool put(std::string& line, const Token& t, const std::string& text) {
+  std::size_t begin = t.begin;
+  while (t.end - begin < text.size() && begin > 0 && line[begin - 1] == ' ') --begin;
+  if (t.end - begin < text.size()) return false;
+  line.replace(begin, t.end - begin, std::string(t.end - begin - text.size(), ' ') + text);
+  return true;
+}
+
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6E", v);
+  return buf;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string l;
+  for (char c : text) {
+    if (c == '\n') {
+      lines.push_back(l);
+      l.clear();
+    } else {
+      l += c;
+    }
+  }
+  if (!l.empty()) lines.push_back(l);
+  return lines;
+}
+
+// One mutation of a numeric token of the starter deck; its description.
+std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng) {
+  const auto tokens = numeric_tokens(lines);
+  if (tokens.empty()) return "none";
+  const Token t = tokens[rng() % tokens.size()];
+  std::string& line = lines[t.line];
+  const std::string old = line.substr(t.begin, t.end - t.begin);
+  const bool integer = old.find_first_of(".eE") == std::string::npos;
+  const double v = std::strtod(old.c_str(), nullptr);
+  std::string text;
+  switch (rng() % 7) {
+    case 0: text = integer ? "0" : number_text(0.0); break;
+    case 1: text = integer ? "-1" : number_text(-1.0); break;
+    case 2: text = integer ? std::to_string(-static_cast<long long>(v)) : number_text(-v); break;
+    case 3: text = integer ? "999999" : number_text(v * 1e12); break;
+    case 4: text = integer ? "2" : number_text(v * 1e-12); break;
+    case 5: text = integer ? "999999" : number_text(1e30); break;
+    default: {  // swap with another number
+      const Token u = tokens[rng() % tokens.size()];
+      text = lines[u.line].substr(u.begin, u.end - u.begin);
+      break;
+    }
+  }
+  if (!put(line, t, text)) return "none";
+  return "line " + std::to_string(t.line + 1) + ": '" + old + "' -> '" + text + "'";
+}
+
+struct Outcome {
+  int normal = 0, errors = 0, stopped = 0, slow = 0, unchanged = 0;
+};
+
+void mutate_and_run(const std::string& name, int runs, std::uint64_t seed, Outcome& o) {
+#ifndef HBM_SOLVER_EXE
+  ADD_FAILURE() << "hbm-solver was not built";
+#else
+  const fs::path src = example_deck(name).parent_path();
+  const std::vector<std::string> starter = lines_of(read_text(src / (name + "_0000.rad")));
+  std::vector<std::string> engine = lines_of(read_text(src / (name + "_0001.rad")));
+  for (std::size_t i = 1; i < engine.size(); ++i)
+    if (engine[i - 1].rfind("/RUN/", 0) == 0) engine[i] = number_text(0.1 * std::strtod(engine[i].c_str(), nullptr));
+  std::mt19937_64 rng(seed);
+  for (int k = 0; k < runs; ++k) {
+    std::vector<std::string> lines = starter;
+    const std::string what = mutate(lines, rng);
+    if (what == "none") {
+      ++o.unchanged;
+      continue;
+    }
+    const fs::path dir = fs::current_path() / ("mut_" + name + "_" + std::to_string(k) + per_process_suffix());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+      std::ofstream s(dir / (name + "_0000.rad")), e(dir / (name + "_0001.rad"));
+      for (const auto& l : lines) s << l << "\n";
+      for (const auto& l : engine) e << l << "\n";
+    }
+    const fs::path log = dir / "log.txt", out = dir / "out";
+    const std::string cmd = "timeout 60 '" + std::string(HBM_SOLVER_EXE) + "' '" +
+                            (dir / (name + "_0000.rad")).string() + "' --out '" + out.string() + "' > '" +
+                            log.string() + "' 2>&1";
+    const int status = std::system(cmd.c_str());
+    const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const std::string text = read_text(log);
+    const std::string where = name + " run " + std::to_string(k) + " (" + what + "), " + log.string();
+    for (const char* bad : {"runtime error", "AddressSanitizer", "terminate called", "Assertion", "Segmentation"})
+      EXPECT_EQ(text.find(bad), std::string::npos) << where << ":\n" << text;
+    if (rc == 124) {
+      ++o.slow;
+      continue;
+    }
+    EXPECT_TRUE(rc == 0 || rc == 1 || rc == 3) << where << ": exit " << rc << "\n" << text;
+    if (rc == 0) ++o.normal;
+    if (rc == 3) ++o.stopped;
+    if (rc == 1) {
+      ++o.errors;
+      EXPECT_NE(text.find(name + "_000"), std::string::npos) << where << ": the error names no deck file\n" << text;
+      EXPECT_NE(text.find("error"), std::string::npos) << where << "\n" << text;
+      const bool empty = !fs::exists(out) || fs::is_empty(out);
+      EXPECT_TRUE(empty) << where << ": an error run left files in " << out;
+    }
+    if (rc == 0 || rc == 1 || rc == 3) fs::remove_all(dir);  // keep the folders of failures only
+  }
+#endif
+}
+
+}  // namespace
+
+TEST(DeckMutationRuns, DamagedNumbersNeverCrashTheSolver) {
+  Outcome o;
+  const char* decks[] = {"uniaxial_law2",           "law36_erosion",          "law34_impact",
+                         "relax_law34",             "solid_ha8_law34_impact", "tetra_prism_uniaxial",
+                         "shell_pull_failure_tria", "shell_fold_small_strain", "shell_cantilever_grav_quad",
+                         "springs_nonlinear",       "springs_torsion",        "springs_damping",
+                         "rigid_spring_impact",     "rigid_rwall_impact",     "rigid_tumbling",
+                         "contact_block_slide",     "contact_sphere_rwall"};
+  std::uint64_t seed = 20261124;
+  for (const char* d : decks) mutate_and_run(d, 40, seed++, o);
+  std::printf("mutated runs: %d normal, %d stopped early, %d deck errors, %d stopped at 60 s, %d not mutated\n",
+              o.normal, o.stopped, o.errors, o.slow, o.unchanged);
+  EXPECT_GT(o.errors, 100);  // the damage reaches the checks
+  EXPECT_GT(o.normal + o.stopped, 100);
+}
