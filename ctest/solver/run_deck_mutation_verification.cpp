@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Semantic mutation robustness of the whole solver (label verification): example decks
 // that the deck library reads cleanly are damaged in their numbers (a field set to 0, -1,
-// negated, scaled by 1e12 or 1e-12, an id pointed at 999999, two numbers swapped), keeping
+// negated, scaled by 1e12 or 1e-3, an id pointed at 999999, two numbers swapped), keeping
 // the fixed columns, so that the damage reaches the builders and the run itself rather
 // than the reader (whose own mutation test, ctest/deck/test_mutations.cpp, garbles the
 // text). Each mutated deck runs through hbm-solver, its end time cut to a tenth. Every run
 // must end normally (0), stop with errors (1) or stop early on a criterion (3): never a
 // crash, an abort, an exception or a sanitizer report. An error run must name the deck
 // file and a line, and leave its output folder empty (outputs appear complete or not at
-// all). Runs still going after 60 s (a damaged deck can ask for a tiny stable time step)
+// all). Runs still going after 20 s (a damaged deck can ask for a tiny stable time step)
 // are stopped and counted, not failed.
 #include "example_deck_runner.hpp"
 
@@ -37,8 +37,9 @@ bool is_number(const std::string& s) {
   return end == s.c_str() + s.size();
 }
 
-// Numeric tokens of the data lines (not keywords, comments, /RUN lines or titles).
-std::vector<Token> numeric_tokens(const std::vector<std::string>& lines) {
+// Numeric tokens of the data lines (not keywords, comments, /RUN lines or, in a starter
+// deck, titles).
+std::vector<Token> numeric_tokens(const std::vector<std::string>& lines, bool engine) {
   std::vector<Token> out;
   bool title_next = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -46,7 +47,7 @@ std::vector<Token> numeric_tokens(const std::vector<std::string>& lines) {
     if (l.empty() || l[0] == '#') continue;
     if (l[0] == '/') {
       // Keyword lines; the line after an object keyword with an id is its title.
-      title_next = l.rfind("/RUN/", 0) != 0 && std::count(l.begin(), l.end(), '/') >= 2 && l != "/END";
+      title_next = !engine && std::count(l.begin(), l.end(), '/') >= 2 && l != "/END";
       continue;
     }
     if (title_next) {
@@ -96,9 +97,10 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-// One mutation of a numeric token of the starter deck; its description.
-std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng) {
-  const auto tokens = numeric_tokens(lines);
+// One mutation of a numeric token of a deck; its description. Starter decks keep their
+// fixed columns; in the engine deck (free format) the token may grow.
+std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng, bool free_format = false) {
+  const auto tokens = numeric_tokens(lines, free_format);
   if (tokens.empty()) return "none";
   const Token t = tokens[rng() % tokens.size()];
   std::string& line = lines[t.line];
@@ -111,7 +113,7 @@ std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng) {
     case 1: text = integer ? "-1" : number_text(-1.0); break;
     case 2: text = integer ? std::to_string(-static_cast<long long>(v)) : number_text(-v); break;
     case 3: text = integer ? "999999" : number_text(v * 1e12); break;
-    case 4: text = integer ? "2" : number_text(v * 1e-12); break;
+    case 4: text = integer ? "2" : number_text(v * 1e-3); break;  // 1e-12 on a density: 1e8 cycles
     case 5: text = integer ? "999999" : number_text(1e30); break;
     default: {  // swap with another number
       const Token u = tokens[rng() % tokens.size()];
@@ -119,7 +121,11 @@ std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng) {
       break;
     }
   }
-  if (!put(line, t, text)) return "none";
+  if (free_format) {
+    line.replace(t.begin, t.end - t.begin, text);
+  } else if (!put(line, t, text)) {
+    return "none";
+  }
   return "line " + std::to_string(t.line + 1) + ": '" + old + "' -> '" + text + "'";
 }
 
@@ -138,9 +144,12 @@ void mutate_and_run(const std::string& name, int runs, std::uint64_t seed, Outco
     if (engine[i - 1].rfind("/RUN/", 0) == 0) engine[i] = number_text(0.1 * std::strtod(engine[i].c_str(), nullptr));
   std::mt19937_64 rng(seed);
   for (int k = 0; k < runs; ++k) {
-    std::vector<std::string> lines = starter;
-    const std::string what = mutate(lines, rng);
-    if (what == "none") {
+    std::vector<std::string> lines = starter, engine_lines = engine;
+    // One run in four damages the engine deck (time step, output and stop cards).
+    const bool in_engine = rng() % 4 == 0;
+    const std::string what = (in_engine ? "engine deck " : "") +
+                             (in_engine ? mutate(engine_lines, rng, true) : mutate(lines, rng));
+    if (what.size() >= 4 && what.compare(what.size() - 4, 4, "none") == 0) {
       ++o.unchanged;
       continue;
     }
@@ -150,10 +159,10 @@ void mutate_and_run(const std::string& name, int runs, std::uint64_t seed, Outco
     {
       std::ofstream s(dir / (name + "_0000.rad")), e(dir / (name + "_0001.rad"));
       for (const auto& l : lines) s << l << "\n";
-      for (const auto& l : engine) e << l << "\n";
+      for (const auto& l : engine_lines) e << l << "\n";
     }
     const fs::path log = dir / "log.txt", out = dir / "out";
-    const std::string cmd = "timeout 60 '" + std::string(HBM_SOLVER_EXE) + "' '" +
+    const std::string cmd = "timeout 20 '" + std::string(HBM_SOLVER_EXE) + "' '" +
                             (dir / (name + "_0000.rad")).string() + "' --out '" + out.string() + "' > '" +
                             log.string() + "' 2>&1";
     const int status = std::system(cmd.c_str());
@@ -193,7 +202,7 @@ TEST(DeckMutationRuns, DamagedNumbersNeverCrashTheSolver) {
                          "contact_block_slide",     "contact_sphere_rwall"};
   std::uint64_t seed = 20261124;
   for (const char* d : decks) mutate_and_run(d, 40, seed++, o);
-  std::printf("mutated runs: %d normal, %d stopped early, %d deck errors, %d stopped at 60 s, %d not mutated\n",
+  std::printf("mutated runs: %d normal, %d stopped early, %d deck errors, %d stopped at 20 s, %d not mutated\n",
               o.normal, o.stopped, o.errors, o.slow, o.unchanged);
   EXPECT_GT(o.errors, 100);  // the damage reaches the checks
   EXPECT_GT(o.normal + o.stopped, 100);

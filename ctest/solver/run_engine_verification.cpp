@@ -420,7 +420,8 @@ TEST(EngineVerification, Law36TabulatedYieldAndErosion) {
 // that cycle (the output schedule used to add its interval 1e16 times: a hang). A bulk
 // viscosity qb of 1e30 makes the stable step collapse (to 1e-27 ms, with the energy error at
 // 1e49 %): the run stops with exit 3 once the step falls below 1e-6 of the first one, naming
-// the element (it used to go on for ever).
+// the element (it used to go on for ever). A Young's modulus of 1e30 asks for more than 1e9
+// cycles at the first step: stopped with exit 3 (a units slip), not run for years.
 TEST(EngineVerification, DamagedTimeStepsEndTheRun) {
   std::string log;
   EXPECT_EQ(run_modified_deck("uniaxial_law2", "huge_step", "  7.850000000000E-06", "        1.000000E+30", log), 0)
@@ -433,6 +434,12 @@ TEST(EngineVerification, DamagedTimeStepsEndTheRun) {
       << log;
   EXPECT_NE(log.find("fell below 1e-06 of the first one"), std::string::npos) << log;
   EXPECT_NE(log.find("element 1 of part 1 'cube'"), std::string::npos) << log;
+  // E = 1e30 GPa: a stable step of 1.6e-18 ms, 3e18 cycles to 5 ms: stopped at once.
+  EXPECT_EQ(run_modified_deck("uniaxial_law2", "tiny_step", "  2.000000000000E-01  3.000000000000E-01         0",
+                              "        1.000000E+30  3.000000000000E-01         0", log),
+            3)
+      << log;
+  EXPECT_NE(log.find("cycles to the end time"), std::string::npos) << log;
 }
 
 // /PROP/TYPE14 Isolid 24 takes the coefficient of its viscous hourglass part from dn (0 ->

@@ -172,7 +172,9 @@ RunResult run_model(Model& model, const RunOptions& opt) {
   };
   // A run whose stable time step has fallen below this fraction of its first one would need
   // that many times its planned cycles: it is stopped (a damaged deck, a collapsing element).
-  constexpr double kTimeStepCollapse = 1e-6;
+  // So is a run whose first step would need more cycles than any explicit crash run takes
+  // (a units slip: E in Pa in a GPa deck, a density in kg/mm^3 written in t/mm^3).
+  constexpr double kTimeStepCollapse = 1e-6, kMaxCycles = 1e9;
   double dt_first = 0.0;
   const auto wall0 = Clock::now();
   const double cpu0 = process_cpu_seconds();
@@ -239,9 +241,23 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       c.stop = StopReason::InvertedElement;
       c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " is not positive and finite at time " + fmt("%.6e", t);
     }
-    if (c.step.cycle == 0) dt_first = c.step.dt_next;
+    if (c.step.cycle == 0) {
+      dt_first = c.step.dt_next;
+      const double cycles = (rc.t_stop - t) / dt_first;
+      if (c.stop == StopReason::None && cycles > kMaxCycles) {
+        c.stop = StopReason::TimeStepTooSmall;
+        c.stop_message = "the first time step " + fmt("%.4e", dt_first) + " " + tu + " would take " +
+                         fmt("%.3e", cycles) + " cycles to the end time " + fmt("%.6e", rc.t_stop) + " " + tu +
+                         " (more than " + fmt("%.0e", kMaxCycles) + "): check the units of the element that sets it" +
+                         (c.dt_group != kNoIndex && c.dt_element != kNoIndex
+                              ? " (element " + std::to_string(model.groups[static_cast<std::size_t>(c.dt_group)]
+                                                                 ->element_id[static_cast<std::size_t>(c.dt_element)]) +
+                                    ")"
+                              : std::string());
+      }
+    }
     if (c.stop == StopReason::None && c.step.dt_next < kTimeStepCollapse * dt_first) {
-      c.stop = StopReason::TimeStepCollapse;
+      c.stop = StopReason::TimeStepTooSmall;
       std::string by;
       if (c.dt_group != kNoIndex && c.dt_element != kNoIndex) {
         const ElementGroup& grp = *model.groups[static_cast<std::size_t>(c.dt_group)];

@@ -56,7 +56,7 @@ struct AssemblyPlan {
 };
 
 // Why a cycle asks the loop to stop (None = keep going).
-enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass, EnergyError, TimeStepCollapse };
+enum class StopReason : std::uint8_t { None, EndTime, InvertedElement, AddedMass, EnergyError, TimeStepTooSmall };
 
 struct CycleState {
   StepContext step;
