@@ -12,10 +12,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -241,31 +241,27 @@ RunResult run_model(Model& model, const RunOptions& opt) {
       c.stop = StopReason::InvertedElement;
       c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " is not positive and finite at time " + fmt("%.6e", t);
     }
+    // " (element E of part P 'title')" for the element that set the step, if one did.
+    auto step_element = [&]() -> std::string {
+      if (c.dt_group == kNoIndex || c.dt_element == kNoIndex) return "";
+      const ElementGroup& grp = *model.groups[static_cast<std::size_t>(c.dt_group)];
+      const Part& p = model.parts[static_cast<std::size_t>(grp.part)];
+      return " (element " + std::to_string(grp.element_id[static_cast<std::size_t>(c.dt_element)]) + " of part " +
+             std::to_string(p.id) + " '" + p.title + "')";
+    };
     if (c.step.cycle == 0) {
       dt_first = c.step.dt_next;
       const double cycles = (rc.t_stop - t) / dt_first;
       if (c.stop == StopReason::None && cycles > kMaxCycles) {
         c.stop = StopReason::TimeStepTooSmall;
-        c.stop_message = "the first time step " + fmt("%.4e", dt_first) + " " + tu + " would take " +
+        c.stop_message = "the first time step " + fmt("%.4e", dt_first) + " " + tu + step_element() + " would take " +
                          fmt("%.3e", cycles) + " cycles to the end time " + fmt("%.6e", rc.t_stop) + " " + tu +
-                         " (more than " + fmt("%.0e", kMaxCycles) + "): check the units of the element that sets it" +
-                         (c.dt_group != kNoIndex && c.dt_element != kNoIndex
-                              ? " (element " + std::to_string(model.groups[static_cast<std::size_t>(c.dt_group)]
-                                                                 ->element_id[static_cast<std::size_t>(c.dt_element)]) +
-                                    ")"
-                              : std::string());
+                         " (more than " + fmt("%.0e", kMaxCycles) + "): check the units of its material";
       }
     }
     if (c.stop == StopReason::None && c.step.dt_next < kTimeStepCollapse * dt_first) {
       c.stop = StopReason::TimeStepTooSmall;
-      std::string by;
-      if (c.dt_group != kNoIndex && c.dt_element != kNoIndex) {
-        const ElementGroup& grp = *model.groups[static_cast<std::size_t>(c.dt_group)];
-        const Part& p = model.parts[static_cast<std::size_t>(grp.part)];
-        by = " (element " + std::to_string(grp.element_id[static_cast<std::size_t>(c.dt_element)]) + " of part " +
-             std::to_string(p.id) + " '" + p.title + "')";
-      }
-      c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " " + tu + by + " fell below " +
+      c.stop_message = "time step " + fmt("%.4e", c.step.dt_next) + " " + tu + step_element() + " fell below " +
                        fmt("%.0e", kTimeStepCollapse) + " of the first one (" + fmt("%.4e", dt_first) + " " + tu +
                        ") at time " + fmt("%.6e", t) + " " + tu + ", cycle " + std::to_string(c.step.cycle);
     }
