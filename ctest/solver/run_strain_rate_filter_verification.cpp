@@ -57,28 +57,22 @@ fs::path modified_copy(const std::string& name, const std::string& tag, double t
 
 const SolidGroup& solid(const InProcessRun& r) { return dynamic_cast<const SolidGroup&>(*r.model.groups.at(0)); }
 
-// law36_erosion (one brick, curve f = 3e-4 + 2e-3 eps_p GPa) with two curves: f at rate 0,
-// 2 f at R = 0.05 /ms; `curves_line` is the card's line 3 (N_funct ... Vp).
-std::vector<std::pair<std::string, std::string>> brick_two_curves(const std::string& curves_line) {
-  return {{"  3.000000000000E-02" + e0 + e0, e0 + e0 + e0},  // EPS_p_max 0: no failure
-          {"         1         0" + e0 + e0 + e0, curves_line},
-          {"\n         2\n  1.000000000000E+00\n  0.000000000000E+00\n",
-           "\n         2         2\n  1.000000000000E+00  2.000000000000E+00\n" + e0 + "  5.000000000000E-02\n"}};
+// law36_rate_filter's curves line with F_cut 0 (OpenRadioss: 10 kHz).
+std::pair<std::string, std::string> fcut_zero() {
+  return {"         2         0" + e0 + "  2.000000000000E-01" + e0, "         2         0" + e0 + e0 + e0};
 }
 
 }  // namespace
 
 TEST(StrainRateFilter, Law36BrickUsesTheFilteredRate) {
-  const fs::path starter = modified_copy(
-      "law36_erosion", "law36_rate_brick", 1.0,
-      brick_two_curves("         2         0" + e0 + "  2.000000000000E-01" + e0));
-  auto r = run_in_process("law36_rate_brick", starter);
+  // decks/examples/law36_rate_filter: law36_erosion's brick and curve with the two rate curves.
+  auto r = run_in_process("law36_rate_filter");
   ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
   const SolidGroup& g = solid(*r);
   EXPECT_DOUBLE_EQ(g.material.plasticity.rate_filter, 2.0 * M_PI * 0.2);
   ASSERT_EQ(g.eps_rate.size(), 1u);
   const double R = 0.05, rate = g.eps_rate[0];
-  const ThTable th = read_th(r->out / "law36_erosion_TH_NODE_1.csv");
+  const ThTable th = read_th(r->out / "law36_rate_filter_TH_NODE_1.csv");
   const double L = 1.0 + th.rows.back()[th.col("DX")];
   const double pull_rate = 1.263157894737E-02 / L;  // v / L after the ramp
   double sig[6];
@@ -145,8 +139,7 @@ TEST(StrainRateFilter, Law36OptionsAsOpenRadiossReadsThem) {
     EXPECT_TRUE(solid(*r).eps_rate.empty());
   }
   {
-    const fs::path starter = modified_copy("law36_erosion", "law36_fcut_default", 0.1,
-                                           brick_two_curves("         2         0" + e0 + e0 + e0));
+    const fs::path starter = modified_copy("law36_rate_filter", "law36_fcut_default", 0.1, {fcut_zero()});
     auto r = run_in_process("law36_fcut_default", starter);
     ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
     EXPECT_DOUBLE_EQ(solid(*r).material.plasticity.rate_filter, 2.0 * M_PI * 10.0);
@@ -154,11 +147,11 @@ TEST(StrainRateFilter, Law36OptionsAsOpenRadiossReadsThem) {
   const std::string curves = "         1         0" + e0 + e0 + e0;
   std::string log;
   {  // The default in a deck of seconds: 10 kHz = 1e4 per work time unit.
-    auto edits = brick_two_curves("         2         0" + e0 + e0 + e0);
+    std::vector<std::pair<std::string, std::string>> edits{fcut_zero()};
     const std::string ms = "                  kg                  mm                  ms\n";
     const std::string s = "                  kg                  mm                   s\n";
     edits.push_back({ms + ms, s + s});
-    auto r = run_in_process("law36_fcut_seconds", modified_copy("law36_erosion", "law36_fcut_seconds", 0.1, edits));
+    auto r = run_in_process("law36_fcut_seconds", modified_copy("law36_rate_filter", "law36_fcut_seconds", 0.1, edits));
     ASSERT_EQ(r->result.exit_code, 0) << r->result.message;
     EXPECT_DOUBLE_EQ(solid(*r).material.plasticity.rate_filter, 2.0 * M_PI * 1.0e4);
   }

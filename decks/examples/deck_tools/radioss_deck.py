@@ -206,6 +206,15 @@ class Deck:
             i10(1) + i10(0) + f20(0) + f20(0) + f20(0), "",
             i10(yield_fct), f20(yield_scale), f20(0.0)])
 
+    def law36_rates(self, mid, title, rho, e, nu, eps_p_max, curves, fcut):
+        """/MAT/LAW36 with yield curves at increasing strain rates: curves = [(fct, scale,
+        rate), ...] (up to 5), strain-rate filter cutoff fcut (0: 10 kHz in OpenRadioss)."""
+        self.card(f"/MAT/LAW36/{mid}", title, [
+            f20(rho), f20(e) + f20(nu) + f20(eps_p_max) + f20(0) + f20(0),
+            i10(len(curves)) + i10(0) + f20(0) + f20(fcut) + f20(0), "",
+            "".join(i10(c[0]) for c in curves), "".join(f20(c[1]) for c in curves),
+            "".join(f20(c[2]) for c in curves)])
+
     # ---- groups and surfaces
     def grnod_node(self, gid, title, ids):
         self.card(f"/GRNOD/NODE/{gid}", title, rows_of_ten(ids))

@@ -369,9 +369,30 @@ def law36_erosion():
     d.write()
 
 
+def law36_rate_filter():
+    E, nu, rho = 0.2, 0.3, 7.85e-6
+
+    def material(d):
+        d.funct(2, "yield curve", [(0.0, 3.0e-4), (0.1, 5.0e-4), (1.0, 5.0e-4)])
+        d.law36_rates(1, "tabulated, two strain rates", rho, E, nu, 0.0, [(2, 1.0, 0.0), (2, 2.0, 0.05)], 0.2)
+
+    d = single_element("law36_rate_filter", [
+        "law36_rate_filter: one LAW36 brick with yield curves at two strain rates, f(eps_p) at",
+        "rate 0 and 2 f at 0.05 /ms (f: 3e-4 GPa at eps_p = 0 rising to 5e-4 GPa at 0.1),",
+        "F_cut = 0.2 /ms, pulled at 0.0126 mm/ms after a 0.5 ms ramp, to 1 ms.",
+        "What it shows: the yield stress is f(eps_p) (1 + r / 0.05) at the element's strain rate",
+        "r filtered as OpenRadioss does (r_n = a r + (1 - a) r_(n-1), a = 2 pi F_cut dt):",
+        "sigma_xx matches it (0.5%) while the rate of the pull would give 5% more or above.",
+        run_line("law36_rate_filter"), "Checked by ctest/solver/run_strain_rate_filter_verification.cpp "
+        "(label verification)."], material, 5.0, 0.06, node_vars=["DX"], part_vars=["IE"])
+    d.engine(1.0, 0.05, print_every=1000)
+    d.write()
+
+
 if __name__ == "__main__":
     tetra_prism_uniaxial()
     law36_erosion()
+    law36_rate_filter()
     wave_bar()
     patch_distorted()
     uniaxial_law1()
