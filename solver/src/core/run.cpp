@@ -252,6 +252,11 @@ RunResult run_model(Model& model, const RunOptions& opt) {
     if (c.step.cycle == 0) {
       dt_first = c.step.dt_next;
       const double cycles = (rc.t_stop - t) / dt_first;
+      if (cycles < 1.0)
+        listing.line("  warning: the first time step " + fmt("%.4e", dt_first) + " " + tu + step_element() +
+                         " is longer than the whole run (end time " + fmt("%.6e", rc.t_stop) + " " + tu +
+                         "): one cycle; check the units of its material",
+                     true);
       if (c.stop == StopReason::None && cycles > kMaxCycles) {
         c.stop = StopReason::TimeStepTooSmall;
         c.stop_message = "the first time step " + fmt("%.4e", dt_first) + " " + tu + step_element() + " would take " +
