@@ -106,22 +106,21 @@ std::string mutate(std::vector<std::string>& lines, std::mt19937_64& rng, bool f
                    bool by_card = false) {
   auto tokens = numeric_tokens(lines, free_format);
   if (tokens.empty()) return "none";
-  if (by_card) {
+  if (by_card) {  // every card that holds a number is equally likely
     std::vector<std::size_t> card_of(lines.size(), 0);
-    std::size_t cards = 0;
+    std::size_t card = 0;
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      if (!lines[i].empty() && lines[i][0] == '/') ++cards;
-      card_of[i] = cards;
+      if (!lines[i].empty() && lines[i][0] == '/') ++card;
+      card_of[i] = card;
     }
-    const std::size_t pick = card_of[tokens[rng() % tokens.size()].line];
-    std::vector<Token> in_card;
-    std::size_t card = 1 + rng() % std::max<std::size_t>(cards, 1);
+    std::vector<std::size_t> cards;  // in line order, each once
     for (const Token& t : tokens)
-      if (card_of[t.line] == card) in_card.push_back(t);
-    if (in_card.empty())
-      for (const Token& t : tokens)
-        if (card_of[t.line] == pick) in_card.push_back(t);
-    tokens = in_card;
+      if (cards.empty() || cards.back() != card_of[t.line]) cards.push_back(card_of[t.line]);
+    const std::size_t pick = cards[rng() % cards.size()];
+    std::vector<Token> in_card;
+    for (const Token& t : tokens)
+      if (card_of[t.line] == pick) in_card.push_back(t);
+    tokens = std::move(in_card);
   }
   const Token t = tokens[rng() % tokens.size()];
   std::string& line = lines[t.line];

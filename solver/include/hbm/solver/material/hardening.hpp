@@ -40,7 +40,8 @@ struct PlasticityLaw {
   TabulatedHardening tab;
   double eps_p_max = std::numeric_limits<double>::infinity();  // failure: element deleted
   // Strain-rate filter 2 pi F_cut [1/time] (OpenRadioss PM(9)); 0: the rate of the step is
-  // used as it is. Set for LAW36 with two or more yield curves (law36_card.hpp).
+  // used as it is. Set for LAW36 with two or more yield curves (law36_card.hpp) and for LAW2
+  // with c > 0 and F_cut > 0 (law2_card.hpp).
   double rate_filter = 0;
   double yield_stress(double eps_p, double rate) const {
     return kind == Kind::JohnsonCook ? jc.yield_stress(eps_p, rate) : tab.yield_stress(eps_p, rate);
