@@ -58,12 +58,11 @@ class PhaseTimer {
   double cpu0_;
 };
 
-// Nodal loops (assembly, velocity and position updates, sums) cost a few ns per node;
-// a parallel region costs microseconds when both cores are free and milliseconds when
-// another process holds one of the 2 cores (measured: docs/engine-design.md section 14,
-// 2 threads 3-12x slower than 1 on the nodal phases). They run on one thread below
-// this size; results do not depend on it (every node is computed alone, sums use
-// fixed chunks).
+// Nodal sums (node_sum) cost about a ns per node; a parallel region costs microseconds
+// when both cores are free and milliseconds when another process holds one of the 2
+// cores (docs/engine-design.md section 14). They run on one thread below this size;
+// results do not depend on it (fixed chunks). The nodal updates and the assembly run
+// over the thread partition's node ranges whenever several threads run (for_node_ranges).
 constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
 
 // Element groups with fewer chunks than this run on one thread inside their own
@@ -78,6 +77,16 @@ int max_threads() {
 #else
   return 1;
 #endif
+}
+
+// body(i0, i1) over the node ranges of the thread partition when several threads run,
+// else once over all nodes (every node is updated alone: the same bits either way).
+template <class F>
+void for_node_ranges(const Model& m, const CycleState& c, F&& body) {
+  if (c.partition.active_for(max_threads()))
+    parallel_ranges(c.partition.node_begin, body);
+  else
+    body(std::size_t{0}, m.nodes.n_nodes);
 }
 
 // Deterministic parallel sum over nodes: fixed chunks, partials summed in chunk order.
@@ -138,24 +147,72 @@ void compute_element_forces(Model& m, CycleState& c) {
     c.group_seconds[g] += seconds_since(w0);
     if (sample_cpu) c.group_cpu_seconds[g] += kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
   };
-  const bool share_small = max_threads() > 1;
-  std::vector<std::size_t>& small = c.small_groups;
-  small.clear();
-  for (std::size_t g = 0; g < ng; ++g) {
-    // All elements inside rigid bodies: slots stay zero, nothing to compute.
-    if (m.groups[g]->all_deactivated()) continue;
-    if (share_small && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks)
-      small.push_back(g);
-    else
-      run_group(g);
+  const int threads = max_threads();
+  if (threads > 1 && !c.partition.built_for(threads)) {
+    c.run_whole.assign(ng, 0);
+    for (std::size_t g = 0; g < ng; ++g)
+      c.run_whole[g] = n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks ? 1 : 0;
+    c.partition.build(m, threads, c.run_whole);
   }
-  if (!small.empty()) {
+  if (!c.partition.active_for(threads)) {
+    for (std::size_t g = 0; g < ng; ++g)
+      if (!m.groups[g]->all_deactivated()) run_group(g);  // else: zero slots, nothing to do
+  } else {
+    // Small groups run whole on the thread that owns them; large groups with force stages
+    // run chunk by chunk on the owning threads, all in one parallel region; large groups
+    // without stages run one after the other, each parallel over its own chunks.
+    std::vector<std::size_t>& small = c.small_groups;
+    std::vector<std::size_t>& staged = c.staged_groups;
+    small.clear();
+    staged.clear();
+    for (std::size_t g = 0; g < ng; ++g) {
+      ElementGroup& grp = *m.groups[g];
+      if (grp.all_deactivated()) continue;
+      if (c.run_whole[g]) {
+        small.push_back(g);
+      } else if (grp.has_force_stages()) {
+        grp.begin_forces(c.step, m.nodes);
+        staged.push_back(g);
+      } else {
+        run_group(g);
+      }
+    }
+    c.thread_group_seconds.assign(static_cast<std::size_t>(threads) * ng, 0.0);
+    c.thread_group_cpu_seconds.assign(static_cast<std::size_t>(threads) * ng, 0.0);
 #ifdef _OPENMP
     // Nested regions inside a group run on the calling thread.
     omp_set_max_active_levels(1);
+#pragma omp parallel if (small.size() + staged.size() > 1)
 #endif
-#pragma omp parallel for schedule(dynamic, 1) if (small.size() > 1)
-    for (std::size_t k = 0; k < small.size(); ++k) run_group(small[k]);
+    {
+#ifdef _OPENMP
+      const auto team = static_cast<unsigned>(omp_get_num_threads());
+      const auto self = static_cast<unsigned>(omp_get_thread_num());
+#else
+      const unsigned team = 1, self = 0;
+#endif
+      for (const std::size_t g : small)
+        if (c.partition.group_thread[g] % team == self) run_group(g);
+      double* wall = c.thread_group_seconds.data() + self * ng;
+      double* cpu = c.thread_group_cpu_seconds.data() + self * ng;
+      for (const std::size_t g : staged) {
+        ElementGroup& grp = *m.groups[g];
+        const auto w0 = Clock::now();
+        const double cpu0 = sample_cpu ? thread_cpu_seconds() : 0.0;
+        const std::size_t nch = grp.n_force_chunks();
+        for (std::size_t ch = 0; ch < nch; ++ch)
+          if (grp.chunk_thread[ch] % team == self) grp.force_chunk(ch, c.step, m.nodes);
+        wall[g] += seconds_since(w0);
+        if (sample_cpu) cpu[g] += kCpuSampleCycles * (thread_cpu_seconds() - cpu0);
+      }
+    }
+    for (const std::size_t g : staged) {
+      m.groups[g]->end_forces(c.group_results[g]);
+      for (std::size_t t = 0; t < static_cast<std::size_t>(threads); ++t) {
+        c.group_seconds[g] += c.thread_group_seconds[t * ng + g];
+        c.group_cpu_seconds[g] += c.thread_group_cpu_seconds[t * ng + g];
+      }
+    }
   }
   for (std::size_t g = 0; g < ng; ++g) {
     ElementGroup& grp = *m.groups[g];
@@ -201,9 +258,9 @@ void AssemblyPlan::build(const Model& m) {
 // One thread: scatter, group after group, slot after slot: the slot buffers are read
 // in memory order and the nodal arrays stay in cache; each node receives its slots in
 // (group, element) order, the order of the gather, so the sums are the same bits.
-// Several threads (large models): node-ordered gather through the packed plan (each
-// node summed by one thread). Groups whose elements all lie inside rigid bodies (zero
-// slots) are left out of both.
+// Several threads: node-ordered gather through the packed plan, each thread over the
+// node range it owns (ThreadPartition; each node summed by one thread). Groups whose
+// elements all lie inside rigid bodies (zero slots) are left out of both.
 void assemble_nodal_forces(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
@@ -216,7 +273,8 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
   double* __restrict myo = n.moment.y.data();
   double* __restrict mzo = n.moment.z.data();
   double* __restrict kro = n.rot_stiffness.data();
-  if (nn < kParallelNodes || max_threads() == 1) {
+  const int threads = max_threads();
+  if (!c.partition.active_for(threads)) {
     for (double* a : {fxo, fyo, fzo, ko, mxo, myo, mzo, kro}) std::fill(a, a + nn, 0.0);
     for (const auto& gp : m.groups) {
       const ElementGroup& g = *gp;
@@ -260,35 +318,36 @@ void assemble_nodal_forces(Model& m, CycleState& c) {
     const AssemblyPlan::Entry* ent = plan.entries.data();
     const std::uint32_t* rstart = plan.rot_start.data();
     const AssemblyPlan::Entry* rent = plan.rot_entries.data();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < nn; ++i) {
-      double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0;
-      for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
-        const SlotPointers& p = P[ent[j].group];
-        const std::uint32_t s = ent[j].slot;
-        fx += p.fx[s];
-        fy += p.fy[s];
-        fz += p.fz[s];
-        k += p.k[s];
+    parallel_ranges(c.partition.node_begin, [&](std::size_t i0, std::size_t i1) {
+      for (std::size_t i = i0; i < i1; ++i) {
+        double fx = 0.0, fy = 0.0, fz = 0.0, k = 0.0;
+        for (std::uint32_t j = start[i]; j < start[i + 1]; ++j) {
+          const SlotPointers& p = P[ent[j].group];
+          const std::uint32_t s = ent[j].slot;
+          fx += p.fx[s];
+          fy += p.fy[s];
+          fz += p.fz[s];
+          k += p.k[s];
+        }
+        fxo[i] = fx;
+        fyo[i] = fy;
+        fzo[i] = fz;
+        ko[i] = k;
+        double mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
+        for (std::uint32_t j = rstart[i]; j < rstart[i + 1]; ++j) {
+          const SlotPointers& p = P[rent[j].group];
+          const std::uint32_t s = rent[j].slot;
+          mx += p.mx[s];
+          my += p.my[s];
+          mz += p.mz[s];
+          kr += p.kr[s];
+        }
+        mxo[i] = mx;
+        myo[i] = my;
+        mzo[i] = mz;
+        kro[i] = kr;
       }
-      fxo[i] = fx;
-      fyo[i] = fy;
-      fzo[i] = fz;
-      ko[i] = k;
-      double mx = 0.0, my = 0.0, mz = 0.0, kr = 0.0;
-      for (std::uint32_t j = rstart[i]; j < rstart[i + 1]; ++j) {
-        const SlotPointers& p = P[rent[j].group];
-        const std::uint32_t s = rent[j].slot;
-        mx += p.mx[s];
-        my += p.my[s];
-        mz += p.mz[s];
-        kr += p.kr[s];
-      }
-      mxo[i] = mx;
-      myo[i] = my;
-      mzo[i] = mz;
-      kro[i] = kr;
-    }
+    });
   }
   for (Vec3Soa* v : {&n.force_ext, &n.contact_force}) {
     std::fill(v->x.begin(), v->x.end(), 0.0);
@@ -380,25 +439,26 @@ void update_velocities(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.dt_mid;
-  const std::size_t nn = n.n_nodes;
-  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
-    if (n.is_secondary[i] || !(n.mass[i] > 0.0)) return;
-    const double inv_m = 1.0 / n.mass[i];
-    const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
-    n.a.x[i] = ax;
-    n.a.y[i] = ay;
-    n.a.z[i] = az;
-    n.v.x[i] += dt * ax;
-    n.v.y[i] += dt * ay;
-    n.v.z[i] += dt * az;
+  for_node_ranges(m, c, [&](std::size_t i0, std::size_t i1) {
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (n.is_secondary[i] || !(n.mass[i] > 0.0)) continue;
+      const double inv_m = 1.0 / n.mass[i];
+      const double ax = n.force.x[i] * inv_m, ay = n.force.y[i] * inv_m, az = n.force.z[i] * inv_m;
+      n.a.x[i] = ax;
+      n.a.y[i] = ay;
+      n.a.z[i] = az;
+      n.v.x[i] += dt * ax;
+      n.v.y[i] += dt * ay;
+      n.v.z[i] += dt * az;
+    }
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
+      const double inv = 1.0 / n.inertia[i];
+      n.omega.x[i] += dt * n.moment.x[i] * inv;
+      n.omega.y[i] += dt * n.moment.y[i] * inv;
+      n.omega.z[i] += dt * n.moment.z[i] * inv;
+    }
   });
-  for (std::size_t i = 0; i < nn; ++i) {
-    if (!n.has_rotation[i] || n.is_secondary[i] || !(n.inertia[i] > 0.0)) continue;
-    const double inv = 1.0 / n.inertia[i];
-    n.omega.x[i] += dt * n.moment.x[i] * inv;
-    n.omega.y[i] += dt * n.moment.y[i] * inv;
-    n.omega.z[i] += dt * n.moment.z[i] * inv;
-  }
   t0.stop(c.times.nodal_update, c.cpu_times.nodal_update);
 }
 
@@ -474,11 +534,12 @@ void update_positions(Model& m, CycleState& c) {
   const PhaseTimer t0(c);
   NodalState& n = m.nodes;
   const double dt = c.step.dt_next;
-  const std::size_t nn = n.n_nodes;
-  parallel_loop(nn, nn >= kParallelNodes, [&](std::size_t i) {
-    n.x.x[i] += dt * n.v.x[i];
-    n.x.y[i] += dt * n.v.y[i];
-    n.x.z[i] += dt * n.v.z[i];
+  for_node_ranges(m, c, [&](std::size_t i0, std::size_t i1) {
+    for (std::size_t i = i0; i < i1; ++i) {
+      n.x.x[i] += dt * n.v.x[i];
+      n.x.y[i] += dt * n.v.y[i];
+      n.x.z[i] += dt * n.v.z[i];
+    }
   });
   c.step.time += dt;
   c.step.dt_prev = dt;

@@ -36,6 +36,12 @@ void ElementGroup::deactivate(std::span<const std::uint8_t> inside) {
   }
 }
 
+void ElementGroup::force_chunk_elements(std::size_t ch, std::vector<Index>& out) const {
+  out.clear();
+  for (std::size_t e = ch * kChunk; e < std::min(n_elements, (ch + 1) * kChunk); ++e)
+    out.push_back(static_cast<Index>(e));
+}
+
 VtkCellType ElementGroup::vtk_cell(std::size_t e, Index* nodes, int& n_nodes) const {
   const std::size_t npe = nodes_per_element;
   const Index* c = connectivity.data() + e * npe;

@@ -56,6 +56,11 @@ std::string_view ShellElementGroup::formulation() const {
                                         : "shell3 CST membrane + DKT bending";
 }
 
+void ShellElementGroup::force_chunk_elements(std::size_t ch, std::vector<Index>& out) const {
+  out.assign(computed_.begin() + static_cast<std::ptrdiff_t>(std::min(computed_.size(), ch * kChunk)),
+             computed_.begin() + static_cast<std::ptrdiff_t>(std::min(computed_.size(), (ch + 1) * kChunk)));
+}
+
 void ShellElementGroup::compute_forces(const StepContext& step, const NodalState& nodes,
                                        GroupStepResult& result) {
   const ShellNodalView nv{nodes.x.x.data(),     nodes.x.y.data(),     nodes.x.z.data(),
@@ -83,7 +88,7 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
         slot_rot_stiffness[s] = kr;
       }
     }
-  });
+  }, chunk_thread);
   for (std::size_t ch = 0; ch < nch; ++ch) {
     const ShellKernelTotals& t = chunk_totals_[ch];
     energy.internal += t.de_int;

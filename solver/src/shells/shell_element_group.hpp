@@ -29,6 +29,11 @@ class ShellElementGroup final : public ElementGroup {
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
   bool solid_cells() const override { return false; }
+  // The chunks run over the computed elements; quad 0.6, triangle 0.85 of a one-point
+  // brick (bench-model of 3459ac4: 87 and 123 ns against 146).
+  std::size_t n_force_chunks() const override { return n_chunks(computed_.size()); }
+  void force_chunk_elements(std::size_t ch, std::vector<Index>& out) const override;
+  double relative_element_cost() const override { return nodes_per_element == 4 ? 0.6 : 0.85; }
   void cell_field(CellField field, std::span<double> out) const override;
   std::size_t n_small_strain() const override { return data.n_frozen(); }
   // Drops the elements inside a rigid body from the computed list.

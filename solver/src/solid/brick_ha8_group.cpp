@@ -341,7 +341,7 @@ void BrickHa8Group::compute_forces(const StepContext& step, const NodalState& no
   std::vector<Index> dt_el(nch, kNoIndex), inv_el(nch, kNoIndex);
   parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
     compute_chunk(ch, step, nodes, e_int_c[ch], dt_c[ch], dt_el[ch], inv_el[ch]);
-  });
+  }, chunk_thread);
   for (std::size_t ch = 0; ch < nch; ++ch) {
     energy.internal += e_int_c[ch];
     if (dt_c[ch] < result.dt_min) {

@@ -54,6 +54,8 @@ class BrickHa8Group final : public ElementGroup {
   Index initialize(const NodalState& nodes);
 
   std::string_view formulation() const override { return "brick8 HA8 2x2x2 Gauss, constant pressure"; }
+  // About 7 one-point bricks (docs/engine-design.md section 12.1).
+  double relative_element_cost() const override { return 7.0; }
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
   void cell_field(CellField field, std::span<double> out) const override;

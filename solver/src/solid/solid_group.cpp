@@ -1110,37 +1110,23 @@ void SolidGroup::compute_brick_lanes(std::size_t e0, LaneCount lane_count, const
   dt_elem = step_elem;
 }
 
-void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes,
-                                GroupStepResult& result) {
-  // Per-chunk sums, reduced in chunk order (independent of the thread count). Groups of a
-  // few chunks (most groups of the body model) use the stack: no allocation per call.
-  struct ChunkSums {
-    double e_int = 0.0, e_hg = 0.0, dt = std::numeric_limits<double>::infinity();
-    Index dt_elem = kNoIndex, inverted = kNoIndex;
-  };
-  constexpr std::size_t kStackChunks = 16;
-  const std::size_t nch = n_chunks(n_elements);
-  ChunkSums stack_sums[kStackChunks];
-  std::vector<ChunkSums> heap_sums(nch > kStackChunks ? nch : 0);
-  ChunkSums* sums = nch > kStackChunks ? heap_sums.data() : stack_sums;
+// Per-chunk sums of the last compute_forces, reduced in chunk order by end_forces
+// (independent of the thread that ran a chunk).
+void SolidGroup::begin_forces(const StepContext& /*step*/, const NodalState& nodes) {
+  chunk_sums_.assign(n_chunks(n_elements), ChunkSums{});
   if (nodal_pressure.enabled) nodal_pressure.update(nodes, connectivity, alive, frozen_geometry);
-  if (nch == 1) {
-    ChunkSums& c = sums[0];
-    if (nodes_per_element == 8)
-      compute_brick_chunk(0, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
-    else
-      compute_tetra_chunk(0, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
-  } else {
-    parallel_loop(nch, nch >= 8, [&](std::size_t ch) {  // 8 = kSmallGroupChunks (cycle.cpp)
-      ChunkSums& c = sums[ch];
-      if (nodes_per_element == 8)
-        compute_brick_chunk(ch, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
-      else
-        compute_tetra_chunk(ch, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
-    });
-  }
-  for (std::size_t ch = 0; ch < nch; ++ch) {
-    const ChunkSums& c = sums[ch];
+}
+
+void SolidGroup::force_chunk(std::size_t ch, const StepContext& step, const NodalState& nodes) {
+  ChunkSums& c = chunk_sums_[ch];
+  if (nodes_per_element == 8)
+    compute_brick_chunk(ch, step, nodes, c.e_int, c.e_hg, c.dt, c.dt_elem, c.inverted);
+  else
+    compute_tetra_chunk(ch, step, nodes, c.e_int, c.dt, c.dt_elem, c.inverted);
+}
+
+void SolidGroup::end_forces(GroupStepResult& result) {
+  for (const ChunkSums& c : chunk_sums_) {
     energy.internal += c.e_int;
     energy.hourglass += c.e_hg;
     if (c.dt < result.dt_min) {
@@ -1159,6 +1145,15 @@ void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes
         energy.eroded += e_int[e];
       }
   }
+}
+
+void SolidGroup::compute_forces(const StepContext& step, const NodalState& nodes,
+                                GroupStepResult& result) {
+  begin_forces(step, nodes);
+  const std::size_t nch = chunk_sums_.size();
+  // 8 = kSmallGroupChunks (cycle.cpp): smaller groups run on one thread.
+  parallel_loop(nch, nch >= 8, [&](std::size_t ch) { force_chunk(ch, step, nodes); }, chunk_thread);
+  end_forces(result);
 }
 
 }  // namespace hbm::solver

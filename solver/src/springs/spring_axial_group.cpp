@@ -54,7 +54,7 @@ void SpringAxialGroup::compute_forces(const StepContext& step, const NodalState&
       slot_force.x[s2] = -fe.x(); slot_force.y[s2] = -fe.y(); slot_force.z[s2] = -fe.z();
       element_stiffness(e, nodes, 0.0, chunk_dt[c], chunk_el[c]);
     }
-  });
+  }, chunk_thread);
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 

@@ -16,6 +16,7 @@ class SpringAxialGroup final : public SpringGroup {
   std::vector<Eigen::Vector3d> axis;  // last non-degenerate axis per element
 
   std::string_view formulation() const override { return "spring TYPE4 axial"; }
+  double relative_element_cost() const override { return 0.7; }  // 100 ns (bench-model)
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
   void init_axes(const NodalState& nodes);

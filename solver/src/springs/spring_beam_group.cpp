@@ -116,7 +116,7 @@ void SpringBeamGroup::compute_forces(const StepContext& step, const NodalState& 
       const double l = r.norm();
       element_stiffness(e, nodes, 0.25 * k_trans * law_scale[e] * l * l, chunk_dt[c], chunk_el[c]);
     }
-  });
+  }, chunk_thread);
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 

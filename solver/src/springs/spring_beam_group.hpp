@@ -29,6 +29,7 @@ class SpringBeamGroup final : public SpringGroup {
   std::vector<Index> orientation_node;     // optional n3 per element (y axis towards it)
 
   std::string_view formulation() const override { return "spring TYPE13 beam-type"; }
+  double relative_element_cost() const override { return 2.6; }  // as TYPE8 (estimate)
   void compute_forces(const StepContext& step, const NodalState& nodes,
                       GroupStepResult& result) override;
   // Initial frames from x0 and the property skew (call after length0 is set).

@@ -64,7 +64,7 @@ void SpringGeneralGroup::compute_forces(const StepContext& step, const NodalStat
       }
       element_stiffness(e, nodes, 0.0, chunk_dt[c], chunk_el[c]);
     }
-  });
+  }, chunk_thread);
   finish_step(chunk_dt, chunk_el, chunk_broke, result);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hbm/solver/model.hpp"
+#include "hbm/solver/thread_partition.hpp"
 
 #include <cstdint>
 #include <string>
@@ -77,7 +78,14 @@ struct CycleState {
   std::vector<double> group_cpu_seconds;
   AssemblyPlan assembly;
   std::vector<SlotPointers> slot_pointers;  // per group, refreshed every cycle
-  std::vector<std::size_t> small_groups;    // groups shared out between threads
+  std::vector<std::size_t> small_groups;    // groups that run whole, one per thread
+  std::vector<std::uint8_t> run_whole;      // per group: 1 if it is one of them
+  std::vector<std::size_t> staged_groups;   // large groups run chunk by chunk (force stages)
+  // Wall and sampled CPU seconds per thread and group of the staged groups' chunks
+  // (thread t, group g at t * n_groups + g), added to group_seconds after the region.
+  std::vector<double> thread_group_seconds, thread_group_cpu_seconds;
+  // Node ranges and element chunks per thread (built when more than one thread runs).
+  ThreadPartition partition;
   // Where /DT/NODA/CST put mass: per group, per element (allocated on first use) [mass].
   std::vector<std::vector<double>> element_added_mass;
   std::vector<std::string> events;  // element deletions etc., printed by the run loop

@@ -107,6 +107,21 @@ class ElementGroup : public ThSource {
   // kernels (they must call the base); the default leaves the kernel to mask alive = 0.
   virtual void deactivate(std::span<const std::uint8_t> inside);
 
+  // --- sharing the work out between threads (speed only: results never depend on it) --
+  // Thread that computes each force chunk when several threads run, set by the core's
+  // ThreadPartition so that a thread's elements read and write mostly nodes that the same
+  // thread updates (core/thread_partition.cpp); empty: chunks shared out statically.
+  std::vector<std::uint8_t> chunk_thread;
+  // Number of force chunks compute_forces runs and the elements of chunk ch, in its
+  // order. Default: elements ch * kChunk ..; groups that compute a list of elements
+  // (shells: the ones not deactivated) override both.
+  virtual std::size_t n_force_chunks() const { return n_chunks(n_elements); }
+  virtual void force_chunk_elements(std::size_t ch, std::vector<Index>& out) const;
+  // Time one element of the group takes per cycle relative to a one-point brick (the
+  // whole-model bench, docs/engine-design.md section 14); weighs the work out between
+  // threads, nothing else.
+  virtual double relative_element_cost() const { return 1.0; }
+
   // --- behaviour -------------------------------------------------------------------------
   // Formulation name for listings and the bench, e.g. "brick8 FB 1-point".
   virtual std::string_view formulation() const = 0;
@@ -116,6 +131,17 @@ class ElementGroup : public ThSource {
   // elements; every reduction via per-chunk partials summed in chunk order.
   virtual void compute_forces(const StepContext& step, const NodalState& nodes,
                               GroupStepResult& result) = 0;
+
+  // compute_forces in three stages, so that the core can run the chunks of every large
+  // group in one parallel region, each chunk on the thread that owns it: begin_forces
+  // (one thread, before any chunk), force_chunk for each ch < n_force_chunks() (any
+  // thread, chunks independent of each other), end_forces (one thread, after all
+  // chunks: reductions in chunk order, deletions). compute_forces gives the same bits.
+  // Groups without the stages return false and are run whole.
+  virtual bool has_force_stages() const { return false; }
+  virtual void begin_forces(const StepContext& /*step*/, const NodalState& /*nodes*/) {}
+  virtual void force_chunk(std::size_t /*ch*/, const StepContext& /*step*/, const NodalState& /*nodes*/) {}
+  virtual void end_forces(GroupStepResult& /*result*/) {}
 
   // VTK cell of element e: writes its distinct node indices to `nodes` (capacity
   // nodes_per_element) and returns the cell type and count (degenerate bricks as wedge
