@@ -151,8 +151,11 @@ void compute_element_forces(Model& m, CycleState& c) {
   if (threads > 1 && !c.partition.built_for(threads)) {
     c.run_whole.assign(ng, 0);
     for (std::size_t g = 0; g < ng; ++g)
-      c.run_whole[g] = n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks ? 1 : 0;
+      c.run_whole[g] = !m.groups[g]->has_force_stages() && n_chunks(m.groups[g]->n_elements) < kSmallGroupChunks;
     c.partition.build(m, threads, c.run_whole);
+  } else if (threads > 1 && c.partition.active_for(threads) && !c.partition.measured &&
+             c.step.cycle >= ThreadPartition::kMeasureCycles) {
+    c.partition.build(m, threads, c.run_whole, c.group_seconds);
   }
   if (!c.partition.active_for(threads)) {
     for (std::size_t g = 0; g < ng; ++g)

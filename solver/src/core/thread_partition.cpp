@@ -37,7 +37,8 @@ std::size_t median_node(const ElementGroup& g, std::span<const Index> elements, 
 
 }  // namespace
 
-void ThreadPartition::build(Model& m, int n_threads, std::span<const std::uint8_t> run_whole) {
+void ThreadPartition::build(Model& m, int n_threads, std::span<const std::uint8_t> run_whole,
+                            std::span<const double> group_seconds) {
   const auto T = static_cast<std::size_t>(std::clamp(n_threads, 1, 255));  // owners are bytes
   const std::size_t nn = m.nodes.n_nodes;
   std::vector<WorkPiece> pieces;
@@ -45,8 +46,16 @@ void ThreadPartition::build(Model& m, int n_threads, std::span<const std::uint8_
   for (std::size_t g = 0; g < m.groups.size(); ++g) {
     const ElementGroup& grp = *m.groups[g];
     if (grp.all_deactivated()) continue;
-    const double per_element = grp.relative_element_cost();
     const std::size_t nch = grp.n_force_chunks();
+    double per_element = grp.relative_element_cost();
+    if (group_seconds.size() == m.groups.size()) {
+      std::size_t computed = 0;
+      for (std::size_t ch = 0; ch < nch; ++ch) {
+        grp.force_chunk_elements(ch, chunk_elements);
+        computed += chunk_elements.size();
+      }
+      per_element = computed > 0 ? group_seconds[g] / static_cast<double>(computed) : 0.0;
+    }
     const bool whole = g < run_whole.size() && run_whole[g] != 0;
     elements.clear();
     for (std::size_t ch = 0; ch < nch; ++ch) {
@@ -103,7 +112,8 @@ void ThreadPartition::build(Model& m, int n_threads, std::span<const std::uint8_
     }
   }
   threads = n_threads;
-  shared = total >= kMinSharedWork;
+  measured = group_seconds.size() == m.groups.size();
+  if (!measured) shared = total >= kMinSharedWork;  // measured: keep the first decision
 }
 
 }  // namespace hbm::solver

@@ -28,8 +28,14 @@ struct ThreadPartition {
   // (ctest -j2 running two threaded tests), which small models do not earn back.
   static constexpr double kMinSharedWork = 2048.0;
 
+  // Cycles after which the partition is built again from the measured time of each group
+  // (the static relative costs are estimates; the small groups' fixed cost per call is
+  // not in them).
+  static constexpr std::int64_t kMeasureCycles = 200;
+
   int threads = 0;                     // built for this many threads (0: not built)
   bool shared = false;                 // enough work to share (kMinSharedWork)
+  bool measured = false;               // built from measured group times
   std::vector<std::size_t> node_begin; // threads + 1 bounds, multiples of kChunk but the last
   std::vector<std::uint8_t> group_thread;  // per group: owner when the group runs whole
 
@@ -39,7 +45,10 @@ struct ThreadPartition {
   // chunk or group sits at the median node index of its elements and goes to the
   // thread whose node range holds that index; the node ranges are cut where the
   // cumulative work, in node-index order, reaches k / n_threads of the total.
-  void build(Model& m, int n_threads, std::span<const std::uint8_t> run_whole);
+  // group_seconds (empty, or one per group): measured time of each group over the same
+  // cycles, used instead of the relative costs (a chunk gets its group's time per element).
+  void build(Model& m, int n_threads, std::span<const std::uint8_t> run_whole,
+             std::span<const double> group_seconds = {});
   bool built_for(int n_threads) const { return threads == n_threads; }
   bool active_for(int n_threads) const { return n_threads > 1 && threads == n_threads && shared; }
 };
