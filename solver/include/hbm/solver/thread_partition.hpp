@@ -7,7 +7,7 @@
 // cycle and its slot forces are mostly gathered by itself. Without this, with the nodal
 // phases on one thread, the other core's kernels met every node's x and v in the first
 // core's cache each cycle: on the 2-core machine the element kernels took 45-85 % more
-// CPU time at 2 threads than at 1 (docs/engine-design.md section 14).
+// CPU time at 2 threads than at 1 (docs/engine-design.md section 14.7).
 // Speed only: every element and every node is computed alone and every sum is reduced
 // in a fixed order, so results are bitwise the same for any partition or thread count.
 #pragma once
