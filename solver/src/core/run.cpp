@@ -344,6 +344,18 @@ RunResult run_model(Model& model, const RunOptions& opt) {
                 " (last probe: " + chooser.last_choice() + ")";
   listing.line("  threads " + threads_text + ", process CPU time " + fmt("%.3f", process_cpu_seconds() - cpu0) +
                " s");
+  if (c.partition.threads > 1) {
+    // Who did what on several threads (ThreadPartition, docs/cycle.md).
+    const ThreadPartition& tp = c.partition;
+    std::string ranges, shares;
+    for (std::size_t k = 0; k + 1 < tp.node_begin.size(); ++k) {
+      ranges += (k ? ", " : "") + std::to_string(tp.node_begin[k]) + "-" + std::to_string(tp.node_begin[k + 1]);
+      shares += (k ? " / " : "") + fmt("%.1f", 100.0 * tp.work_share[k]);
+    }
+    listing.line("  thread partition: node index ranges " + ranges + ", element work " + shares + " %" +
+                 (tp.measured ? " (from measured group times)" : " (from relative costs)") +
+                 (tp.shared ? "" : "; model too small to share: one thread ran every phase"));
+  }
   // Per phase: wall seconds, share of the wall time, ns per element- or node-cycle from
   // the wall time and from the main thread's CPU time (the robust figure on a loaded
   // machine with 1 thread).

@@ -99,10 +99,12 @@ void ThreadPartition::build(Model& m, int n_threads, std::span<const std::uint8_
     const auto t = static_cast<std::size_t>(it - node_begin.begin()) - 1;
     return static_cast<std::uint8_t>(std::min(t, T - 1));
   };
+  work_share.assign(T, 0.0);
   group_thread.assign(m.groups.size(), 0);
   for (auto& gp : m.groups) gp->chunk_thread.assign(gp->all_deactivated() ? 0 : gp->n_force_chunks(), 0);
   for (const WorkPiece& p : pieces) {
     const std::uint8_t t = owner_of(p.position);
+    work_share[t] += total > 0.0 ? p.cost / total : 0.0;
     ElementGroup& grp = *m.groups[p.group];
     if (p.whole) {
       group_thread[p.group] = t;

@@ -38,6 +38,7 @@ struct ThreadPartition {
   bool measured = false;               // built from measured group times
   std::vector<std::size_t> node_begin; // threads + 1 bounds, multiples of kChunk but the last
   std::vector<std::uint8_t> group_thread;  // per group: owner when the group runs whole
+  std::vector<double> work_share;          // per thread: its share of the element work
 
   // Builds for `n_threads` threads. run_whole[g] != 0: group g runs on one thread
   // (owned as one piece); else its force chunks are shared out (ElementGroup::chunk_thread
