@@ -6,7 +6,9 @@
 //   errors are O((omega dt)^2) ~ 1e-5, tolerances 1e-3 relative);
 // - a node hitting a free segment: 1-D elastic collision (momentum to round-off, final
 //   velocities (m1-m2)/(m1+m2) v0 and 2 m1/(m1+m2) v0);
-// - Coulomb friction: sliding under a constant normal load decelerates at mu g;
+// - Coulomb friction: sliding under a constant normal load decelerates at mu g; below the
+//   Coulomb limit the incremental form (Iform 2) sticks, the viscous form (Iform 1, the
+//   OpenRadioss default) creeps at F / (VISF sqrt(2 K m));
 // - self-contact of a folded strip: no force from a node's own or neighbouring
 //   segments, opposite layers pushed apart with zero resultant;
 // - search: no re-sort before some node moved half the margin, re-sort after;
@@ -139,9 +141,9 @@ TEST(ContactPenalty, CoulombFrictionDeceleratesAtMuG) {
   EXPECT_NEAR(c.friction_energy(), mu * m * g * dist, 2e-3 * mu * m * g * dist);
 }
 
-TEST(ContactPenalty, FrictionSticksBelowTheCoulombLimit) {
-  // A tangential pull F = 0.8 mu N, ramped slowly, only stretches the stick spring:
-  // the node ends at the static stick displacement F/K (no slip).
+TEST(ContactPenalty, IncrementalFrictionSticksBelowTheCoulombLimit) {
+  // Iform 2: a tangential pull F = 0.8 mu N, ramped slowly, only stretches the stick
+  // spring: the node ends at the static stick displacement F/K (no slip).
   NodalState n;
   const double m = 1.0, N = 1.0, mu = 0.5, K = 1e3, gap = 0.05, dt = 1e-3;
   ContactSurface s = flat_quad(n, 10.0, 1.0, K, true);
@@ -151,6 +153,7 @@ TEST(ContactPenalty, FrictionSticksBelowTheCoulombLimit) {
   PenaltyContactParams p;
   p.gapmin = gap;
   p.fric = mu;
+  p.friction_form = 2;
   p.vis_s = 0.5;
   PenaltyContact c(s, {node}, p, n);
   double t = 0;
@@ -166,6 +169,47 @@ TEST(ContactPenalty, FrictionSticksBelowTheCoulombLimit) {
   EXPECT_NEAR(n.x.x[node], F / K, 0.1 * F / K);
   // Nothing dissipated: the friction energy is what the stick spring stores, F^2/(2K).
   EXPECT_NEAR(c.friction_energy(), F * F / (2 * K), 0.2 * F * F / (2 * K));
+}
+
+TEST(ContactPenalty, ViscousFrictionCreepsBelowTheCoulombLimit) {
+  // Iform 1 (OpenRadioss's default, i7for3.F): the friction force is a tangential damper
+  // VISF sqrt(2 K m) v_t capped at mu F_n, so a constant pull F below the cap has no
+  // static equilibrium: the node creeps at v = F / (VISF sqrt(2 K m)), and all the work of
+  // the friction force is dissipated (friction energy = F x creep distance).
+  for (const double visf : {1.0, 2.0}) {
+    NodalState n;
+    const double m = 1.0, N = 1.0, mu = 0.5, K = 1e3, gap = 0.05, dt = 1e-3;
+    ContactSurface s = flat_quad(n, 1e3, 1.0, K, true);
+    const Index node = add_node(n, {0, 0, gap - N / K}, m);
+    std::vector<std::uint8_t> fixed(n.n_nodes, 0);
+    for (int i = 0; i < 4; ++i) fixed[i] = 1;
+    PenaltyContactParams p;
+    p.gapmin = gap;
+    p.fric = mu;
+    p.visf = visf;
+    p.vis_s = 0.5;
+    PenaltyContact c(s, {node}, p, n);
+    double t = 0, x_ramped = 0, e_ramped = 0;
+    const double F = 0.8 * mu * N, ramp = 2.0, t_end = 12.0;
+    for (int k = 0; k < static_cast<int>(t_end / dt); ++k) {
+      step(n, dt, [&](NodalState& s2) {
+        s2.force.z[node] -= N;
+        s2.force.x[node] += F * std::min(1.0, t / ramp);
+        c.add_forces(s2, t, dt);
+      }, fixed);
+      t += dt;
+      if (std::abs(t - 2 * ramp) < 0.5 * dt) {
+        x_ramped = n.x.x[node];
+        e_ramped = c.friction_energy();
+      }
+    }
+    const double v_creep = F / (visf * std::sqrt(2.0 * K * m));
+    EXPECT_NEAR(n.v.x[node], v_creep, 1e-3 * v_creep) << "VISF " << visf;
+    EXPECT_NEAR(n.x.x[node] - x_ramped, v_creep * (t_end - 2 * ramp), 2e-3 * v_creep * (t_end - 2 * ramp));
+    // Every bit of the friction work is dissipated: F x distance once the pull is constant.
+    const double w = F * (n.x.x[node] - x_ramped);
+    EXPECT_NEAR(c.friction_energy() - e_ramped, w, 1e-3 * w) << "VISF " << visf;
+  }
 }
 
 TEST(ContactPenalty, DampingDissipatesWhatTheNodeLoses) {

@@ -111,14 +111,14 @@ void add_starter_contact(std::vector<KeywordSpec>& out) {
         text_field("IBC", 7, 3, "boundary condition flags X Y Z of deactivated nodes, columns 8-10"),
         int_field("Inacti", 30, 0, 6, 0, "initial penetration treatment flag"),
         zero_means_default(real_field("VISs", 40, Dimension::None, kNonNegative, 0.05, "critical damping coefficient on stiffness")),
-        real_field("VISF", 60, Dimension::None, kNonNegative, 1, "critical damping coefficient on friction"),
+        real_field("VISF", 60, Dimension::None, kNonNegative, 1, "critical damping coefficient of the viscous friction (Iform 1; 0 = 1)"),
         real_field("Bumult", 80, Dimension::None, kNonNegative, 0.2, "sorting factor"),
     }));
     k.lines.push_back(line("friction", {
         int_field("Ifric", 0, 0, 0, 0, "friction formulation (0 = Coulomb only)"),
         int_field("Ifiltr", 10, 0, 3, 0, "friction filtering flag"),
         real_field("Xfreq", 20, Dimension::None, kNonNegative, 0, "filtering coefficient"),
-        int_field("Iform", 40, 0, 2, 0, "friction penalty formulation"),
+        int_field("Iform", 40, 0, 2, 0, "friction penalty formulation: 0, 1 viscous (default), 2 incremental (stiffness)"),
         id_field("sens_id", 50, RefKind::Sensor, false, "sensor"),
         id_field("fct_IDF", 60, RefKind::Funct, false, "friction scale vs temperature function"),
         real_field("AscaleF", 70, Dimension::None, kAny, 1, "abscissa scale of fct_IDF"),

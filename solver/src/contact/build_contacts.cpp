@@ -195,12 +195,18 @@ void build_type7(BuildContext& ctx, const Card& c, const SurfaceTable& surfs,
     dropped({"Stmin", "Stmax"}, "with Istf " + std::to_string(p.istf));
   }
   if (contact::has_any(c, {"VISs", "VIS_S", "VISS"})) p.vis_s = contact::real_any(c, {"VISs", "VIS_S", "VISS"});
-  if (p.fric < 0 || p.vis_s < 0 || p.stfac <= 0) {
-    ctx.error(c, "Stfac must be > 0, Fric and VIS_S >= 0");
+  // Friction as OpenRadioss reads it (hm_read_inter_type07.F): Iform 0 is 1, the viscous
+  // form; VISF 0 (or blank) with Fric > 0 is 1; Iform 2, the incremental spring, has no VISF.
+  const auto iform = contact::has_any(c, {"Iform"}) ? contact::int_any(c, {"Iform"}) : 0;
+  p.friction_form = iform == 2 ? 2 : 1;
+  if (contact::has_any(c, {"VISF"})) p.visf = contact::real_any(c, {"VISF"});
+  if (p.visf == 0.0) p.visf = 1.0;
+  if (p.fric < 0 || p.vis_s < 0 || p.stfac <= 0 || p.visf < 0) {
+    ctx.error(c, "Stfac must be > 0, Fric, VIS_S and VISF >= 0");
     return;
   }
   warn_unsupported(ctx, c, {"Ibag", "Idel", "Iadm", "Fpenmax", "ITIED", "mesh_size", "dtmin", "Irem_gap",
-                            "Irem_i2", "Ifiltr", "Xfreq", "Iform", "sens_id", "fct_IDF"});
+                            "Irem_i2", "Ifiltr", "Xfreq", "sens_id", "fct_IDF"});
   // Inacti 5 and 6 (variable gap for initially penetrated nodes) are carried; 1-4 are not.
   if (contact::has_any(c, {"Inacti"})) {
     const auto inacti = contact::int_any(c, {"Inacti"});

@@ -98,6 +98,8 @@ PenaltyContact::PenaltyContact(ContactSurface main, std::vector<Index> secondary
   prev_segment_.assign(ns, kNoIndex);
   prev_weight_.assign(ns, {0, 0, 0, 0});
   prev_damping_.assign(ns, 0.0);
+  prev_friction_.assign(ns, V3{});
+  prev_vrel_.assign(ns, V3{});
   prev_vn_.assign(ns, 0.0);
   prev_normal_.assign(ns, V3{});
   if (p_.inacti == 5 || p_.inacti == 6) gap_cap_.assign(ns, std::numeric_limits<double>::infinity());
@@ -355,6 +357,13 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
       const double vn_now = pair_power(nodes, i, prev_normal_[i], prev_segment_[i], prev_weight_[i]);
       damping_dissipated_ += -prev_damping_[i] * 0.5 * (prev_vn_[i] + vn_now) * dt;
     }
+    // The same for the viscous friction force (Iform 1).
+    if (prev_segment_[i] != kNoIndex && (prev_friction_[i].x != 0.0 || prev_friction_[i].y != 0.0 ||
+                                         prev_friction_[i].z != 0.0)) {
+      const double p_now = pair_power(nodes, i, prev_friction_[i], prev_segment_[i], prev_weight_[i]);
+      friction_dissipated_ += -0.5 * (dot(prev_friction_[i], prev_vrel_[i]) + p_now) * dt;
+    }
+    prev_friction_[i] = V3{};
   }
   double power_now = 0;
   if (time < p_.tstart || time > p_.tstop) {
@@ -486,9 +495,19 @@ void PenaltyContact::add_forces(NodalState& nodes, double time, double dt) {
     prev_vn_[i] = vn;
     prev_normal_[i] = best_n;
 
-    // Friction: elastic-plastic tangential spring of stiffness k_now.
     V3 ft{};
-    if (mu > 0) {
+    if (mu > 0 && p_.friction_form != 2) {
+      // Viscous friction (Iform 1, OpenRadioss's default; i7for3.F): a tangential damper
+      // of VISF times the critical coefficient sqrt(2 K m_s) of the secondary node on the
+      // contact spring, capped by Coulomb's mu F_n; no history, all of its work dissipated.
+      const V3 vt = vrel - vn * best_n;
+      const double speed = norm(vt);
+      const double mag = std::min(p_.visf * std::sqrt(2.0 * k_now * ms) * speed, mu * fn);
+      if (speed > 0 && mag > 0) ft = (-mag / speed) * vt;
+      prev_friction_[i] = ft;
+      prev_vrel_[i] = vrel;
+    } else if (mu > 0) {
+      // Incremental friction (Iform 2): elastic-plastic tangential spring of stiffness k_now.
       V3 t = tangential_[i];
       t -= dot(t, best_n) * best_n;  // keep it in the current tangent plane
       const V3 vt = vrel - vn * best_n;

@@ -22,7 +22,9 @@
 // as LS-DYNA's IGNORE = 1 reads it; OpenRadioss applies Inacti at t = 0 only.
 // Damping (VIS_S, fraction of critical): F_d = -2 VIS_S sqrt(K m*) v_n, m* the reduced
 // mass of node and segment; the total normal force is kept compressive. Coulomb friction
-// (Fric) by a regularised stick-slip (elastic-plastic tangential spring): F_t += -K v_t dt,
+// (Fric), regularised as OpenRadioss's TYPE7 (i7for3.F) by Iform: 1 (its default) viscous,
+// F_t = -min(VISF sqrt(2 K m_s) |v_t|, mu F_n) v_t / |v_t| with m_s the secondary node's mass
+// and no history; 2 incremental, an elastic-plastic tangential spring F_t += -K v_t dt,
 // |F_t| <= mu F_n. The force on s is F; the segment nodes get -N_i F (N_i: weights at the
 // closest point), so linear momentum is exchanged exactly.
 //
@@ -50,6 +52,8 @@ struct PenaltyContactParams {
   double stmin = 0.0;      // lower bound on Kp (0: none) [force/length]
   double stmax = 0.0;      // upper bound on K (0: none) [force/length]
   double fric = 0.0;       // Coulomb coefficient
+  int friction_form = 1;   // Iform: 1 viscous (OpenRadioss's default), 2 incremental spring
+  double visf = 1.0;       // VISF: critical damping coefficient of the viscous friction
   int igap = 0;            // 0: constant gap = gapmin; 1: variable gap from thicknesses
   double gapmin = 0.0;     // [length]
   double gap_scale = 1.0;  // Fscalegap (Igap 1)
@@ -194,6 +198,9 @@ class PenaltyContact {
   std::size_t n_entry_caps_ = 0;       // Inacti 5/6: gaps reduced at an entry during the run
   std::vector<std::array<double, 4>> prev_weight_;
   std::vector<double> prev_damping_, prev_vn_;  // damping force (along prev normal), v_n
+  // Viscous friction (Iform 1) of the last cycle and the relative velocity it was computed
+  // from: its dissipation is accounted next cycle, as the damping's.
+  std::vector<V3> prev_friction_, prev_vrel_;
   std::vector<V3> prev_normal_;
   // Inacti 5/6: per secondary slot, upper bound on the gap of its pairs (+inf: none);
   // set at the first active cycle (gap_cap_set_), then only raised.
