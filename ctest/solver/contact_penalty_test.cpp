@@ -141,34 +141,49 @@ TEST(ContactPenalty, CoulombFrictionDeceleratesAtMuG) {
   EXPECT_NEAR(c.friction_energy(), mu * m * g * dist, 2e-3 * mu * m * g * dist);
 }
 
-TEST(ContactPenalty, IncrementalFrictionSticksBelowTheCoulombLimit) {
-  // Iform 2: a tangential pull F = 0.8 mu N, ramped slowly, only stretches the stick
-  // spring: the node ends at the static stick displacement F/K (no slip).
+// A node of mass m = 1 pressed on a fixed flat quad (K = 1e3, side 2 half_side) by N = 1,
+// in equilibrium, and pulled along x by F = 0.8 mu N ramped over `ramp` (mu = 0.5), dt =
+// 1e-3 until t_end; after_step(t, n, node, c) after each step.
+constexpr double kPullM = 1.0, kPullN = 1.0, kPullMu = 0.5, kPullK = 1e3, kPullF = 0.8 * kPullMu * kPullN;
+
+template <class AfterStep>
+void pull_on_plane(PenaltyContactParams p, double half_side, double ramp, double t_end, AfterStep&& after_step) {
   NodalState n;
-  const double m = 1.0, N = 1.0, mu = 0.5, K = 1e3, gap = 0.05, dt = 1e-3;
-  ContactSurface s = flat_quad(n, 10.0, 1.0, K, true);
-  const Index node = add_node(n, {0, 0, gap - N / K}, m);
+  const double gap = 0.05, dt = 1e-3;
+  ContactSurface s = flat_quad(n, half_side, 1.0, kPullK, true);
+  const Index node = add_node(n, {0, 0, gap - kPullN / kPullK}, kPullM);
   std::vector<std::uint8_t> fixed(n.n_nodes, 0);
   for (int i = 0; i < 4; ++i) fixed[i] = 1;
-  PenaltyContactParams p;
   p.gapmin = gap;
-  p.fric = mu;
-  p.friction_form = 2;
+  p.fric = kPullMu;
   p.vis_s = 0.5;
   PenaltyContact c(s, {node}, p, n);
   double t = 0;
-  const double F = 0.8 * mu * N, ramp = 10.0;
-  for (int k = 0; k < 20000; ++k) {
+  for (int k = 0; k < static_cast<int>(std::lround(t_end / dt)); ++k) {
     step(n, dt, [&](NodalState& s2) {
-      s2.force.z[node] -= N;
-      s2.force.x[node] += F * std::min(1.0, t / ramp);
+      s2.force.z[node] -= kPullN;
+      s2.force.x[node] += kPullF * std::min(1.0, t / ramp);
       c.add_forces(s2, t, dt);
     }, fixed);
     t += dt;
+    after_step(t, n, node, c);
   }
-  EXPECT_NEAR(n.x.x[node], F / K, 0.1 * F / K);
+}
+
+TEST(ContactPenalty, IncrementalFrictionSticksBelowTheCoulombLimit) {
+  // Iform 2: a tangential pull F = 0.8 mu N, ramped slowly, only stretches the stick
+  // spring: the node ends at the static stick displacement F/K (no slip).
+  PenaltyContactParams p;
+  p.friction_form = 2;
+  const double F = kPullF, K = kPullK;
+  double x_end = 0, e_end = 0;
+  pull_on_plane(p, 10.0, 10.0, 20.0, [&](double, const NodalState& n, Index node, const PenaltyContact& c) {
+    x_end = n.x.x[node];
+    e_end = c.friction_energy();
+  });
+  EXPECT_NEAR(x_end, F / K, 0.1 * F / K);
   // Nothing dissipated: the friction energy is what the stick spring stores, F^2/(2K).
-  EXPECT_NEAR(c.friction_energy(), F * F / (2 * K), 0.2 * F * F / (2 * K));
+  EXPECT_NEAR(e_end, F * F / (2 * K), 0.2 * F * F / (2 * K));
 }
 
 TEST(ContactPenalty, ViscousFrictionCreepsBelowTheCoulombLimit) {
@@ -177,38 +192,25 @@ TEST(ContactPenalty, ViscousFrictionCreepsBelowTheCoulombLimit) {
   // static equilibrium: the node creeps at v = F / (VISF sqrt(2 K m)), and all the work of
   // the friction force is dissipated (friction energy = F x creep distance).
   for (const double visf : {1.0, 2.0}) {
-    NodalState n;
-    const double m = 1.0, N = 1.0, mu = 0.5, K = 1e3, gap = 0.05, dt = 1e-3;
-    ContactSurface s = flat_quad(n, 1e3, 1.0, K, true);
-    const Index node = add_node(n, {0, 0, gap - N / K}, m);
-    std::vector<std::uint8_t> fixed(n.n_nodes, 0);
-    for (int i = 0; i < 4; ++i) fixed[i] = 1;
     PenaltyContactParams p;
-    p.gapmin = gap;
-    p.fric = mu;
     p.visf = visf;
-    p.vis_s = 0.5;
-    PenaltyContact c(s, {node}, p, n);
-    double t = 0, x_ramped = 0, e_ramped = 0;
-    const double F = 0.8 * mu * N, ramp = 2.0, t_end = 12.0;
-    for (int k = 0; k < static_cast<int>(t_end / dt); ++k) {
-      step(n, dt, [&](NodalState& s2) {
-        s2.force.z[node] -= N;
-        s2.force.x[node] += F * std::min(1.0, t / ramp);
-        c.add_forces(s2, t, dt);
-      }, fixed);
-      t += dt;
-      if (std::abs(t - 2 * ramp) < 0.5 * dt) {
+    const double ramp = 2.0, t_end = 12.0, F = kPullF;
+    double x_ramped = 0, e_ramped = 0, x_end = 0, v_end = 0, e_end = 0;
+    pull_on_plane(p, 1e3, ramp, t_end, [&](double t, const NodalState& n, Index node, const PenaltyContact& c) {
+      if (std::abs(t - 2 * ramp) < 0.5e-3) {
         x_ramped = n.x.x[node];
         e_ramped = c.friction_energy();
       }
-    }
-    const double v_creep = F / (visf * std::sqrt(2.0 * K * m));
-    EXPECT_NEAR(n.v.x[node], v_creep, 1e-3 * v_creep) << "VISF " << visf;
-    EXPECT_NEAR(n.x.x[node] - x_ramped, v_creep * (t_end - 2 * ramp), 2e-3 * v_creep * (t_end - 2 * ramp));
+      x_end = n.x.x[node];
+      v_end = n.v.x[node];
+      e_end = c.friction_energy();
+    });
+    const double v_creep = F / (visf * std::sqrt(2.0 * kPullK * kPullM));
+    EXPECT_NEAR(v_end, v_creep, 1e-3 * v_creep) << "VISF " << visf;
+    EXPECT_NEAR(x_end - x_ramped, v_creep * (t_end - 2 * ramp), 2e-3 * v_creep * (t_end - 2 * ramp));
     // Every bit of the friction work is dissipated: F x distance once the pull is constant.
-    const double w = F * (n.x.x[node] - x_ramped);
-    EXPECT_NEAR(c.friction_energy() - e_ramped, w, 1e-3 * w) << "VISF " << visf;
+    const double w = F * (x_end - x_ramped);
+    EXPECT_NEAR(e_end - e_ramped, w, 1e-3 * w) << "VISF " << visf;
   }
 }
 
