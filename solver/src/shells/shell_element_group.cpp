@@ -61,35 +61,37 @@ void ShellElementGroup::force_chunk_elements(std::size_t ch, std::vector<Index>&
              computed_.begin() + static_cast<std::ptrdiff_t>(std::min(computed_.size(), (ch + 1) * kChunk)));
 }
 
-void ShellElementGroup::compute_forces(const StepContext& step, const NodalState& nodes,
-                                       GroupStepResult& result) {
+// One chunk of the computed list: forces into the slots, the chunk's totals into
+// chunk_totals_[ch] (any thread; chunks touch disjoint elements and slots).
+void ShellElementGroup::force_chunk(std::size_t ch, const StepContext& step, const NodalState& nodes) {
   const ShellNodalView nv{nodes.x.x.data(),     nodes.x.y.data(),     nodes.x.z.data(),
                           nodes.v.x.data(),     nodes.v.y.data(),     nodes.v.z.data(),
                           nodes.omega.x.data(), nodes.omega.y.data(), nodes.omega.z.data()};
   const ShellSlotOut out{slot_force.x.data(),  slot_force.y.data(),  slot_force.z.data(),
                          slot_moment.x.data(), slot_moment.y.data(), slot_moment.z.data()};
   const double dt = step.dt_prev;
-  const std::size_t n_computed = computed_.size();
-  const std::size_t nch = chunk_totals_.size();
   const std::size_t npe = nodes_per_element;
-  const bool quad = data.kind == ShellKind::QuadBT;
-  parallel_loop(nch, true, [&](std::size_t ch) {
-    const std::size_t k0 = ch * kChunk, k1 = std::min(n_computed, k0 + kChunk);
-    const std::span<const std::int32_t> list(computed_.data() + k0, k1 - k0);
-    chunk_totals_[ch] = quad ? quad_bt_forces(data, nv, out, dt, list) : tria_dkt_forces(data, nv, out, dt, list);
-    for (const std::int32_t el : list) {
-      const auto e = static_cast<std::size_t>(el);
-      const double dte = data.dt_elem[e];
-      const bool live = !data.deleted[e] && dte < 1e299;
-      const double k = live ? 2.0 * slot_mass[e] / (dte * dte) : 0.0;
-      const double kr = live ? 2.0 * slot_inertia[e] / (dte * dte) : 0.0;
-      for (std::size_t s = e * npe; s < (e + 1) * npe; ++s) {
-        slot_stiffness[s] = k;
-        slot_rot_stiffness[s] = kr;
-      }
+  const std::size_t k0 = ch * kChunk, k1 = std::min(computed_.size(), k0 + kChunk);
+  const std::span<const std::int32_t> list(computed_.data() + k0, k1 - k0);
+  chunk_totals_[ch] = data.kind == ShellKind::QuadBT ? quad_bt_forces(data, nv, out, dt, list)
+                                                     : tria_dkt_forces(data, nv, out, dt, list);
+  for (const std::int32_t el : list) {
+    const auto e = static_cast<std::size_t>(el);
+    const double dte = data.dt_elem[e];
+    const bool live = !data.deleted[e] && dte < 1e299;
+    const double k = live ? 2.0 * slot_mass[e] / (dte * dte) : 0.0;
+    const double kr = live ? 2.0 * slot_inertia[e] / (dte * dte) : 0.0;
+    for (std::size_t s = e * npe; s < (e + 1) * npe; ++s) {
+      slot_stiffness[s] = k;
+      slot_rot_stiffness[s] = kr;
     }
-  }, chunk_thread);
-  for (std::size_t ch = 0; ch < nch; ++ch) {
+  }
+}
+
+// The chunks' totals in chunk order (independent of the thread that ran a chunk).
+void ShellElementGroup::end_forces(GroupStepResult& result) {
+  const std::size_t n_computed = computed_.size();
+  for (std::size_t ch = 0; ch < chunk_totals_.size(); ++ch) {
     const ShellKernelTotals& t = chunk_totals_[ch];
     energy.internal += t.de_int;
     energy.hourglass += t.de_hg;
@@ -112,6 +114,12 @@ void ShellElementGroup::compute_forces(const StepContext& step, const NodalState
       }
     }
   }
+}
+
+void ShellElementGroup::compute_forces(const StepContext& step, const NodalState& nodes,
+                                       GroupStepResult& result) {
+  parallel_loop(chunk_totals_.size(), true, [&](std::size_t ch) { force_chunk(ch, step, nodes); }, chunk_thread);
+  end_forces(result);
 }
 
 void ShellElementGroup::deactivate(std::span<const std::uint8_t> inside) {
