@@ -65,9 +65,9 @@ class PhaseTimer {
 // over the thread partition's node ranges whenever several threads run (for_node_ranges).
 constexpr std::size_t kParallelNodes = std::size_t{1} << 18;
 
-// Element groups with fewer chunks than this run on one thread inside their own
-// compute_forces (as the solid and shell groups decide); several of them then run side
-// by side, one group per thread, in one parallel region per cycle.
+// Element groups without force stages and with fewer chunks than this run whole on one
+// thread (their owner in the ThreadPartition), side by side in the cycle's element region;
+// inside compute_forces the groups use the same bound for their own chunk loops.
 constexpr std::size_t kSmallGroupChunks = 8;
 
 
@@ -161,9 +161,9 @@ void compute_element_forces(Model& m, CycleState& c) {
     for (std::size_t g = 0; g < ng; ++g)
       if (!m.groups[g]->all_deactivated()) run_group(g);  // else: zero slots, nothing to do
   } else {
-    // Small groups run whole on the thread that owns them; large groups with force stages
-    // run chunk by chunk on the owning threads, all in one parallel region; large groups
-    // without stages run one after the other, each parallel over its own chunks.
+    // Groups with force stages (solids, shells) run chunk by chunk on the owning threads
+    // and small groups without them whole on their owner, all in one parallel region;
+    // large groups without stages run before it, each parallel over its own chunks.
     std::vector<std::size_t>& small = c.small_groups;
     std::vector<std::size_t>& staged = c.staged_groups;
     small.clear();
