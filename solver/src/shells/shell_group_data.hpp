@@ -45,7 +45,7 @@ struct ShellGroupData {
   std::vector<double> thick0;          // initial thickness [length]
   std::vector<double> stress;          // n * np * 3: sxx, syy, sxy (corotational) [stress]
   std::vector<double> epsp;            // n * np equivalent plastic strain [-]
-  std::vector<double> eps_rate;        // per element: filtered strain rate (LAW36, 2+ curves) [1/time]
+  std::vector<double> eps_rate;        // per element: filtered strain rate (rate_filter > 0) [1/time]
   std::vector<double> hist;            // n * np * mat.n_history()
   std::vector<double> extra;           // per element: quad 7 (qx qy transverse shear
                                        // resultants, 5 hourglass forces); tria 9

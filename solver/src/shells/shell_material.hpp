@@ -7,9 +7,9 @@
 //          strain-rate term c ln(epsdot/epsdot0) when c > 0.
 //  - LAW36 J2 plasticity with tabulated yield curves sigma_y(eps_p) per strain rate.
 //    The hardening laws are the engine's (hbm/solver/material/hardening.hpp, shared with
-//    the solids). The rate: LAW2, the point's equivalent strain rate over the step; LAW36
-//    with two or more curves, the element's rate (element_strain_rate) filtered at F_cut,
-//    as OpenRadioss does. Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
+//    the solids). The rate: where the law filters it (LAW36 with two or more curves, LAW2
+//    with c > 0 and F_cut > 0) the element's rate (element_strain_rate) filtered at F_cut,
+//    as OpenRadioss does; else (LAW2 with F_cut 0) the point's own rate over the step. Both use the plane-stress return mapping of Simo & Taylor (1986), "A return mapping
 //    algorithm for plane stress elastoplasticity", IJNME 22: 649-670 (Simo & Hughes,
 //    Computational Inelasticity, section 3.4): the trial stress is relaxed along the
 //    plane-stress projected flow direction and a scalar Newton iteration (safeguarded by

@@ -37,7 +37,7 @@ struct ThicknessLanes {
         const auto e = static_cast<std::size_t>(idx[l]);
         const double dm[3] = {dem[0][l], dem[1][l], dem[2][l]};
         const double dc[3] = {dk[0][l], dk[1][l], dk[2][l]};
-        // LAW36 with rate curves: one filtered rate for the element's points (OpenRadioss).
+        // A filtered rate (LAW36 with rate curves, LAW2 with F_cut): one for the element's points (OpenRadioss).
         double rate = -1.0;
         if (!g.eps_rate.empty() && dt > 0.0)
           rate = filtered_strain_rate(mat.plasticity.rate_filter, dt, element_strain_rate(dm, dc, t[l], dt),

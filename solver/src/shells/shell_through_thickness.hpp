@@ -5,7 +5,7 @@
 //   N = int sigma dz = t/2 sum w_p sigma_p,   M = int z sigma dz = (t/2)^2 sum w_p zeta_p sigma_p.
 // A point whose plastic strain reaches EPS_p_max keeps the work done up to failure in the
 // internal energy and carries no stress afterwards. element_rate >= 0 is the strain rate of
-// every point's yield stress (LAW36 with rate curves), < 0 each point's own.
+// every point's yield stress (filtered: LAW36 with rate curves, LAW2 with F_cut), < 0 each point's own.
 #pragma once
 
 #include "shells/shell_material.hpp"

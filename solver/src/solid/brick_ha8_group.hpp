@@ -41,7 +41,7 @@ class BrickHa8Group final : public ElementGroup {
   std::vector<double> sig;      // 6 x 8 per element: stress (LAW34: long-term part) [stress]
   std::vector<double> hist;     // 6 x 8 per element: LAW34 hereditary deviator [stress]
   std::vector<double> eps_p;    // 8 per element: plastic strain (LAW2/36)
-  std::vector<double> eps_rate; // 8 per element: filtered strain rate (LAW36, 2+ curves) [1/time]
+  std::vector<double> eps_rate; // 8 per element: filtered strain rate (rate_filter > 0) [1/time]
   std::vector<double> e_int;    // internal energy of the element [energy]
   std::vector<double> q_bulk;   // bulk viscosity pressure of the last cycle [stress]
   // /DT/BRICK/CST (set before initialize, which sizes the frozen geometry).

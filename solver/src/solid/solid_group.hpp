@@ -53,7 +53,7 @@ class SolidGroup final : public ElementGroup {
   std::array<std::vector<double>, 6> sig;  // stress (LAW34: long-term part) [stress]
   std::array<std::vector<double>, 6> hist; // LAW34 hereditary deviator [stress]
   std::vector<double> eps_p;               // plastic strain (LAW2/36)
-  std::vector<double> eps_rate;            // filtered equivalent strain rate (LAW36, 2+ curves) [1/time]
+  std::vector<double> eps_rate;            // filtered equivalent strain rate (rate_filter > 0) [1/time]
   std::vector<double> e_int;               // internal energy of the element [energy]
   std::vector<double> e_hg;                // hourglass energy of the element [energy]
   std::array<std::vector<double>, 12> hg;  // hourglass generalized forces Q (3 x 4) [force]

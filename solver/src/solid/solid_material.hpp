@@ -71,7 +71,7 @@ struct SolidPointState {
   double* sig;       // 6 Cauchy stress (LAW34: elastic part 2 Ginf e - p I)
   double* hist;      // 6 hereditary deviatoric stress h (LAW34 only), else nullptr
   double* eps_p;     // equivalent plastic strain (LAW2/36), else nullptr
-  double* eps_rate = nullptr;  // filtered strain rate (LAW36 with rate_filter > 0), else nullptr
+  double* eps_rate = nullptr;  // filtered strain rate (plasticity.rate_filter > 0), else nullptr
 };
 
 // One step of the LAW1 / LAW34 hypoelastic update at a point as the lane kernels do it, the
