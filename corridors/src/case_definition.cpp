@@ -88,6 +88,23 @@ public:
     return out;
   }
 
+  // An array of two-string arrays, e.g. tests = [["R_5_t", "R_5_f"], ["R_7_t", "R_7_f"]].
+  std::vector<std::pair<std::string, std::string>> string_pairs(const char* key) const {
+    std::vector<std::pair<std::string, std::string>> out;
+    const toml::node* n = t_.get(key);
+    if (!n) return out;
+    const std::string what = context_ + ": key '" + key + "' must be an array of [\"x column\", \"y column\"] pairs";
+    const toml::array* a = n->as_array();
+    if (!a) throw InputError(file_, line_of(key), what);
+    for (const auto& e : *a) {
+      const toml::array* p = e.as_array();
+      if (!p || p->size() != 2 || !(*p)[0].is_string() || !(*p)[1].is_string())
+        throw InputError(file_, static_cast<long>(e.source().begin.line), what);
+      out.emplace_back(*(*p)[0].value<std::string>(), *(*p)[1].value<std::string>());
+    }
+    return out;
+  }
+
   const toml::table* table(const char* key) const {
     const toml::node* n = t_.get(key);
     if (!n) return nullptr;
@@ -197,7 +214,8 @@ RatingDef read_rating(const TableReader& r, const std::filesystem::path& case_di
   const toml::table* ct = r.table("corridor");
   if (!ct) throw InputError(r.file(), d.line, "rating '" + d.name + "': missing [rating.corridor] table");
   TableReader c(*ct, r.file(), "corridor of rating '" + d.name + "'");
-  c.only({"file", "curve_column", "x_column", "y_column", "upper", "lower", "mean", "x_unit", "y_unit", "where"});
+  c.only({"file", "curve_column", "x_column", "y_column", "upper", "lower", "mean", "tests_file", "tests", "x_unit",
+          "y_unit", "where"});
   CorridorSpec& s = d.corridor;
   s.case_file = r.file();
   s.case_line = c.line_of("file");
@@ -211,6 +229,24 @@ RatingDef read_rating(const TableReader& r, const std::filesystem::path& case_di
   s.upper_label = c.str("upper", "upper");
   s.lower_label = c.str("lower", "lower");
   s.mean_label = c.str("mean", "");
+  // Reference = average of individual tests (docs/corridors.md, "Reference curve").
+  if (c.has("tests_file") || c.has("tests")) {
+    if (!c.has("tests_file") || !c.has("tests"))
+      throw InputError(r.file(), c.line_of(c.has("tests") ? "tests" : "tests_file"),
+                       "rating '" + d.name + "': 'tests_file' and 'tests' go together");
+    if (!s.mean_label.empty())
+      throw InputError(r.file(), c.line_of("tests_file"),
+                       "rating '" + d.name + "': give either 'mean' (a mean curve in the corridor file) or 'tests' (its average is the reference), not both");
+    const std::string trel = c.str("tests_file", "", true);
+    s.tests.file = case_dir / trel;
+    if (!std::filesystem::exists(s.tests.file))
+      throw InputError(r.file(), c.line_of("tests_file"), "test curves file '" + trel + "' not found (looked for " + s.tests.file.string() + ")");
+    s.tests.curves = c.string_pairs("tests");
+    if (s.tests.curves.empty())
+      throw InputError(r.file(), c.line_of("tests"), "rating '" + d.name + "': 'tests' lists no test");
+    s.tests.case_file = r.file();
+    s.tests.case_line = c.line_of("tests");
+  }
   s.x_unit = c.str("x_unit", "", true);
   s.y_unit = c.str("y_unit", "", true);
   check_unit(r.file(), c.line_of("x_unit"), s.x_unit, "corridor x_unit");

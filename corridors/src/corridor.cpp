@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "hbm/corridors/input_error.hpp"
+#include "hbm/corridors/test_curves.hpp"
 
 namespace hbm::corridors {
 namespace {
@@ -119,6 +120,19 @@ Corridor load_corridor(const CorridorSpec& spec) {
     throw InputError(spec.case_file, spec.case_line,
                      "corridor file " + c.file + " has fewer than 2 rows with " + spec.curve_column +
                          "='" + spec.mean_label + "'" + where_txt);
+  if (!spec.tests.empty()) {
+    const TestCurves t = load_test_curves(spec.tests);
+    c.mean = test_average(t.curves);
+    if (c.mean.x.size() < 2)
+      throw InputError(spec.tests.case_file, spec.tests.case_line,
+                       "the test curves of " + spec.tests.file.string() + " share no abscissa range");
+    std::string names;
+    for (const auto& n : t.names) names += (names.empty() ? "" : ", ") + n;
+    c.mean_name = "average of " + std::to_string(t.names.size()) + " tests";
+    c.source_lines.push_back("Reference: the " + c.mean_name + " (" + names + ") of " +
+                             spec.tests.file.filename().string() + ", over the range all of them cover:");
+    for (const auto& l : t.source_lines) c.source_lines.push_back(l);
+  }
   return c;
 }
 

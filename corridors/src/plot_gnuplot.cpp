@@ -66,7 +66,7 @@ void write_plots(const EvaluationResult& result, const fs::path& dir, const std:
                               fixed(100.0 * rr.inside_fraction, 0) + " %";
     const std::string xl = rr.def.x_label + " [" + rr.x_unit + "]";
     const std::string yl = rr.def.y_label + " [" + rr.y_unit + "]";
-    const std::string ref_title = rr.reference_is_mean ? "test mean" : "corridor mid-line";
+    const std::string ref_title = rr.reference_is_mean ? rr.corridor.mean_name : std::string("corridor mid-line");
     std::ostringstream gp;
     gp << "# gnuplot script written by hbm-corridors for rating '" << base << "'\n"
        << "set encoding utf8\n"

@@ -133,7 +133,7 @@ void write_report(const EvaluationResult& r, const fs::path& dir) {
       j << (i ? "," : "") << "\n    {\"name\": " << json_str(x.def.name) << ", \"title\": " << json_str(x.def.title)
         << ", \"kind\": " << json_str(x.def.kind) << ", \"corridor_file\": " << json_str(x.corridor.file)
         << ", \"x_unit\": " << json_str(x.x_unit) << ", \"y_unit\": " << json_str(x.y_unit)
-        << ", \"reference\": " << json_str(x.reference_is_mean ? "test mean" : "corridor mid-line")
+        << ", \"reference\": " << json_str(x.reference_is_mean ? x.corridor.mean_name : std::string("corridor mid-line"))
         << ", \"parameterisation\": " << json_str(x.parameterisation)
         << ",\n     \"iso18571\": {\"Z\": " << json_num(x.iso.corridor) << ", \"EP\": " << json_num(x.iso.phase)
         << ", \"EM\": " << json_num(x.iso.magnitude) << ", \"ES\": " << json_num(x.iso.slope) << ", \"R\": " << json_num(x.iso.overall)
@@ -225,7 +225,7 @@ void write_report(const EvaluationResult& r, const fs::path& dir) {
     }
     for (const auto& x : r.ratings) {
       m << "\n## " << md(x.def.title) << "\n\n![" << md(x.def.title) << "](plots/" << x.def.name << ".png)\n\n";
-      m << "- reference: " << (x.reference_is_mean ? "test mean" : "corridor mid-line (the file gives no mean)")
+      m << "- reference: " << (x.reference_is_mean ? x.corridor.mean_name : std::string("corridor mid-line (the file gives no mean)"))
         << "; rated on: " << x.parameterisation << "\n";
       if (x.def.kind == "cross")
         m << "- largest deflection: model " << num(x.model_peak_deflection) << " " << x.x_unit << ", reference "
@@ -279,7 +279,7 @@ void write_report(const EvaluationResult& r, const fs::path& dir) {
     for (const auto& x : r.ratings) {
       h << "<h2 id=\"" << html(x.def.name) << "\">" << html(x.def.title) << "</h2>\n<p><img src=\"plots/" << html(x.def.name)
         << ".svg\" alt=\"" << html(x.def.title) << "\"></p>\n<ul><li>reference: "
-        << (x.reference_is_mean ? "test mean" : "corridor mid-line (the file gives no mean)") << "; rated on: "
+        << (x.reference_is_mean ? x.corridor.mean_name : std::string("corridor mid-line (the file gives no mean)")) << "; rated on: "
         << html(x.parameterisation) << "</li>";
       if (x.def.kind == "cross")
         h << "<li>largest deflection: model " << num(x.model_peak_deflection) << " " << html(x.x_unit) << ", reference "

@@ -329,17 +329,17 @@ def main():
         lambda r: [f"{p}: {n} of {tot} ({fmt(t0, 1)} - {fmt(t1, 1)})" for _, p, n, tot, t0, t1 in r.get("switched") or []])
     L.append("## Channels")
     L.append("")
-    L.append("| case | channel | model peak | corridor peak | model / corridor peak deflection | ISO R | grade | "
+    L.append("| case | channel | reference | model peak | reference peak | model / reference peak deflection | ISO R | grade | "
              "Z | EP | EM | ES | CORA | inside corridor |")
-    L.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for x in ratings:
         defl = (f"{fmt(x['model_defl'], 1)} / {fmt(x['ref_defl'], 1)} {x['x_unit']}"
                 if x["model_defl"] is not None else "-")
-        L.append(f"| {x['case']} | {x['name']} | {fmt(x['model_peak'])} {x['unit']} | {fmt(x['ref_peak'])} {x['unit']} | "
+        L.append(f"| {x['case']} | {x['name']} | {x['reference'] or '-'} | {fmt(x['model_peak'])} {x['unit']} | {fmt(x['ref_peak'])} {x['unit']} | "
                  f"{defl} | {fmt(x['R'], 3)} | {x['grade']} | {fmt(x['Z'], 3)} | {fmt(x['EP'], 3)} | {fmt(x['EM'], 3)} | "
                  f"{fmt(x['ES'], 3)} | {fmt(x['cora'], 3)} | {fmt(None if x['inside'] is None else 100 * x['inside'], 0)} % |")
     if not ratings:
-        L.append("| - | no rating (see notes) | | | | | | | | | | | |")
+        L.append("| - | no rating (see notes) | | | | | | | | | | | | |")
     L.append("")
     L.append("## Plots")
     L.append("")
@@ -380,6 +380,11 @@ def main():
              "`geometry/calibration-notes-validation.md`).")
     L.append("- Lateral pelvis (Viano 1989): 150 mm face on the left greater trochanter landmark, travelling -Y "
              "(`corridors/cases/viano1989_pelvis_lateral_5p2.toml`).")
+    L.append("- Reference curve of each rating (ISO/TS 18571 and CORA compare the model with it; docs/corridors.md, "
+             "Ratings): Lebarbe, the published test mean; Viano force-time (thorax and pelvis), the average of "
+             "Viano's individual PMHS curves (SAFER HBM catalogue digitisation, `corridors/data/*_tests.csv`) over "
+             "the time all of them cover; Viano force-deflection, the corridor mid-line (no mean, no individual "
+             "deflections in the reference set). The inside fraction is always taken against the published corridor.")
     L.append("- No material was tuned per case; calibration notes go to `geometry/calibration-notes-validation.md`.")
     tmp = a.out + ".tmp"
     with open(tmp, "w") as f:

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hbm::corridors {
@@ -17,12 +18,23 @@ struct Polyline {
   bool empty() const { return x.empty(); }
 };
 
+/// Which columns of a wide CSV hold individual tests: one (x column, y column) pair per test
+/// (test_curves.hpp). Their average is then the corridor's mean.
+struct TestCurvesSpec {
+  std::filesystem::path file;                               ///< resolved path; empty: none
+  std::vector<std::pair<std::string, std::string>> curves;  ///< (x column, y column) per test
+  std::string case_file;                                    ///< for error messages
+  long case_line = 0;
+  bool empty() const { return file.empty(); }
+};
+
 /// Which rows and columns of a corridor CSV make up one corridor (from the case file).
 struct CorridorSpec {
   std::filesystem::path file;            ///< resolved path of the corridor CSV
   std::string curve_column = "curve";    ///< column naming the curve of each row
   std::string x_column, y_column;        ///< abscissa and ordinate columns
   std::string upper_label = "upper", lower_label = "lower", mean_label;  ///< mean optional
+  TestCurvesSpec tests;  ///< optional: the mean is the average of these tests (same units)
   std::map<std::string, std::string> where;  ///< extra row filters: column = value
   std::string x_unit, y_unit;            ///< units of the numbers in the file
   std::string case_file;                 ///< for error messages
@@ -33,6 +45,7 @@ struct Corridor {
   std::string file;
   std::vector<std::string> source_lines;  ///< the '#' header lines, without '#'
   Polyline upper, lower, mean;            ///< mean empty when the file has none
+  std::string mean_name = "test mean";    ///< what the mean is, for plots and reports
   std::string x_unit, y_unit;
   bool has_mean() const { return !mean.empty(); }
 };
