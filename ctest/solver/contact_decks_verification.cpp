@@ -107,6 +107,45 @@ assert abs(s1) < 1e-9 * m1, s1
              (out / name).string());
 }
 
+// /TH/PART XMOM, MASS and XCG (OpenRadioss names) on the same collision: each block's mass
+// is its element mass; the two momenta add up to the initial m v0 at every output while
+// block B takes nearly all of it (equal masses, elastic); the lateral momenta the contact
+// exchanges cancel; the centre of gravity of the two
+// parts moves at the total momentum over the total mass.
+TEST(ContactDecks, PartMomentumAndCentreOfGravityFollowTheCollision) {
+  REQUIRE_SOLVER();
+  const std::string name = "contact_blocks_collide", tag = "part_momentum";
+  std::string output;
+  const std::string card =
+      "/TH/PART/9\nblocks\n      XMOM      YMOM      MASS       XCG\n         1         2\n/END";
+  ASSERT_EQ(run_modified_deck(name, tag, "/END", card, output), 0) << output;
+  const ThTable t = read_th(modified_deck_dir(tag) / "out" / (name + "_TH_PART_9.csv"));
+  const double m_block = 1e-3, v0 = 5.0, p0 = m_block * v0;
+  const std::size_t pa = t.col("block A XMOM"), pb = t.col("block B XMOM"), ya = t.col("block A YMOM"),
+                    yb = t.col("block B YMOM"), ma = t.col("block A MASS"), mb = t.col("block B MASS"), xa = t.col("block A XCG"),
+                    xb = t.col("block B XCG");
+  EXPECT_NE(t.header[pa].find("[kN*ms]"), std::string::npos) << t.header[pa];
+  EXPECT_NE(t.header[xa].find("[mm]"), std::string::npos) << t.header[xa];
+  ASSERT_GT(t.rows.size(), 10u);
+  const auto& first = t.rows.front();
+  const auto& last = t.rows.back();
+  EXPECT_NEAR(first[ma], m_block, 1e-12);
+  EXPECT_NEAR(first[mb], m_block, 1e-12);
+  EXPECT_NEAR(first[pa], p0, 1e-9 * p0);
+  EXPECT_NEAR(first[pb], 0.0, 1e-9 * p0);
+  for (const auto& r : t.rows) {
+    EXPECT_NEAR(r[pa] + r[pb], p0, 1e-9 * p0) << "t = " << r[0];
+    EXPECT_NEAR(r[ya] + r[yb], 0.0, 1e-9 * p0) << "t = " << r[0];  // exchanged, not created
+    EXPECT_LT(std::abs(r[ya]), 1e-6 * p0) << "t = " << r[0];          // round-off of a head-on impact
+  }
+  EXPECT_GT(last[pb], 0.9 * p0);  // the struck block leaves with most of the momentum
+  EXPECT_LT(last[pa], 0.1 * p0);
+  // centre of gravity of both blocks: x(t) = x(0) + p0 t / (2 m)
+  const double x0 = 0.5 * (first[xa] + first[xb]), dt = last[0] - first[0];
+  EXPECT_NEAR(0.5 * (last[xa] + last[xb]) - x0, p0 * dt / (2 * m_block), 1e-6 * p0 * dt / m_block);
+  EXPECT_LT(first[xa], first[xb]);  // A starts behind B (it moves along +X into B)
+}
+
 TEST(ContactDecks, SphereOnRigidWallMatchesHertz) {
   REQUIRE_SOLVER();
   const std::string name = "contact_sphere_rwall";

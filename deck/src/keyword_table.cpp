@@ -109,6 +109,7 @@ std::string_view to_string(Dimension d) {
     case Dimension::RotDamping: return "force*length*time/rad";
     case Dimension::Energy: return "energy";
     case Dimension::Inertia: return "mass*length^2";
+    case Dimension::Momentum: return "mass*length/time";
     case Dimension::Angle: return "degree";
     case Dimension::Frequency: return "1/time";
     case Dimension::Strain: return "strain";

@@ -120,7 +120,11 @@ void add_starter_loads(std::vector<KeywordSpec>& out) {
     });
     out.push_back(std::move(k));
   }
-  out.push_back(th("/TH/PART", RefKind::Part, "Part time history (energies, momentum).", "part identifier"));
+  out.push_back(th("/TH/PART", RefKind::Part,
+                    "Part time history: IE, KE, HE (energies), XMOM, YMOM, ZMOM (momentum of the part's element nodes), "
+                    "MASS (without added mass), XCG, YCG, ZCG (centre of gravity), AM (added mass), M (mass with it), "
+                    "ER (deleted elements); DEF = IE KE XMOM YMOM ZMOM MASS HE AM.",
+                    "part identifier"));
   out.push_back(th("/TH/SPRING", RefKind::Spring, "Spring element time history.", "spring element identifier"));
   out.push_back(th("/TH/INTER", RefKind::Inter, "Contact interface time history.", "interface identifier"));
   out.push_back(th("/TH/RBODY", RefKind::Rbody, "Rigid body time history.", "rigid body identifier"));

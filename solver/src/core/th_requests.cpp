@@ -78,6 +78,47 @@ std::optional<ThProbe> part_probe(const Model& m, Index part, const std::string&
         }
       return s;
     };
+  } else if (var == "XMOM" || var == "YMOM" || var == "ZMOM") {
+    // Momentum of the part's element nodes, lumped as KE: each node carries its mass (with
+    // added mass, the mass the run integrates) shared among the element slots at it, so the
+    // parts' momenta add up to the nodes' total. A rigid body's main node is in no part.
+    p.unit = Dimension::Momentum;
+    const int d = var[0] - 'X';
+    p.read = [groups, mp, d] {
+      const NodalState& n = mp->nodes;
+      double s = 0;
+      for (auto* g : groups)
+        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
+          const auto i = static_cast<std::size_t>(g->connectivity[k]);
+          const auto share = static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
+          const double v = d == 0 ? n.v.x[i] - 0.5 * mp->dt_output * n.a.x[i]
+                           : d == 1 ? n.v.y[i] - 0.5 * mp->dt_output * n.a.y[i]
+                                    : n.v.z[i] - 0.5 * mp->dt_output * n.a.z[i];
+          s += n.mass[i] / share * v;
+        }
+      return s;
+    };
+  } else if (var == "XCG" || var == "YCG" || var == "ZCG") {
+    // Centre of gravity of the part's element nodes, weighted by their physical lumped
+    // mass shared among the element slots at each node (the lumping of KE and XMOM).
+    p.unit = Dimension::Length;
+    const int d = var[0] - 'X';
+    p.read = [groups, mp, d] {
+      const NodalState& n = mp->nodes;
+      double s = 0, w = 0;
+      for (auto* g : groups)
+        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
+          const auto i = static_cast<std::size_t>(g->connectivity[k]);
+          const double mi = n.mass0[i] / static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
+          s += mi * (d == 0 ? n.x.x[i] : d == 1 ? n.x.y[i] : n.x.z[i]);
+          w += mi;
+        }
+      return w > 0 ? s / w : 0.0;
+    };
+  } else if (var == "MASS") {
+    // Radioss: the part's mass without the mass added by mass scaling.
+    p.unit = Dimension::Mass;
+    p.read = [pp] { return pp->mass0; };
   } else if (var == "AM") {
     p.unit = Dimension::Mass;
     p.read = [pp] { return pp->added_mass; };
@@ -158,7 +199,7 @@ void build_th_groups(BuildContext& ctx) {
                 ctx.error(*c, c->row(r), f, "no part " + std::to_string(id));
                 continue;
               }
-              for (const auto& v : expand({"IE", "KE", "HE", "AM"})) {
+              for (const auto& v : expand({"IE", "KE", "XMOM", "YMOM", "ZMOM", "MASS", "HE", "AM"})) {
                 auto p = part_probe(m, part, v);
                 if (p) g.columns.push_back(std::move(*p));
                 else ctx.error(*c, "unknown /TH/PART variable '" + v + "'");

@@ -50,6 +50,7 @@ std::string unit_text(hbm::deck::Dimension d, const hbm::deck::Units& u) {
     case D::RotDamping: return F + "*" + L + "*" + T + "/rad";
     case D::Energy: return E;
     case D::Inertia: return M + "*" + L + "^2";
+    case D::Momentum: return F + "*" + T;
     case D::Angle: return "rad";
     case D::Frequency: return "1/" + T;
     case D::Strain: return "-";

@@ -24,7 +24,7 @@ enum class FieldType : std::uint8_t {
 enum class Dimension : std::uint8_t {
   None, Id, Count, Flag, Length, Area, Time, Mass, Density, Velocity, Acceleration,
   Force, Moment, Stress, Stiffness, RotStiffness, Damping, RotDamping, Energy, Inertia,
-  Angle, Frequency, Strain, StrainRate, Temperature
+  Angle, Frequency, Strain, StrainRate, Temperature, Momentum
 };
 
 // What an Id field refers to, so the checks can resolve it.
