@@ -8,35 +8,12 @@
 #include <fstream>
 #include <limits>
 
+#include "csv_fields.hpp"
 #include "hbm/corridors/input_error.hpp"
 #include "hbm/corridors/test_curves.hpp"
 
 namespace hbm::corridors {
-namespace {
 
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
-  return s.substr(b, e - b);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      f.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur.push_back(c);
-    }
-  }
-  f.push_back(trim(cur));
-  return f;
-}
-
-}  // namespace
 
 Corridor load_corridor(const CorridorSpec& spec) {
   Corridor c;
@@ -54,14 +31,14 @@ Corridor load_corridor(const CorridorSpec& spec) {
   std::vector<std::pair<long, std::string>> filters;
   while (std::getline(in, line)) {
     ++line_no;
-    line = trim(line);
+    line = csv::trim(line);
     if (line.empty()) continue;
     if (line[0] == '#') {
-      if (header.empty()) c.source_lines.push_back(trim(line.substr(1)));
+      if (header.empty()) c.source_lines.push_back(csv::trim(line.substr(1)));
       continue;
     }
     if (header.empty()) {
-      header = split(line);
+      header = csv::split_line(line);
       auto col = [&](const std::string& name, const char* what) -> long {
         for (std::size_t i = 0; i < header.size(); ++i)
           if (header[i] == name) return static_cast<long>(i);
@@ -77,7 +54,7 @@ Corridor load_corridor(const CorridorSpec& spec) {
       for (const auto& [k, v] : spec.where) filters.emplace_back(col(k, "where key"), v);
       continue;
     }
-    const auto f = split(line);
+    const auto f = csv::split_line(line);
     if (f.size() != header.size())
       throw InputError(c.file, line_no, "expected " + std::to_string(header.size()) +
                                             " values as in the header, found " + std::to_string(f.size()));

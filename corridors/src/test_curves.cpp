@@ -7,32 +7,13 @@
 #include <cmath>
 #include <fstream>
 
+#include "csv_fields.hpp"
 #include "hbm/corridors/input_error.hpp"
 
 namespace hbm::corridors {
 namespace {
 
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r')) ++b;
-  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r')) --e;
-  return s.substr(b, e - b);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      f.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur.push_back(c);
-    }
-  }
-  f.push_back(trim(cur));
-  return f;
-}
+using csv::trim;
 
 // Linear value of a curve with strictly increasing x, xq inside its range.
 double value_at(const Polyline& p, double xq) {
@@ -67,7 +48,7 @@ TestCurves load_test_curves(const TestCurvesSpec& spec) {
       continue;
     }
     if (header.empty()) {
-      header = split(line);
+      header = csv::split_line(line);
       auto col = [&](const std::string& name) -> std::size_t {
         for (std::size_t i = 0; i < header.size(); ++i)
           if (header[i] == name) return i;
@@ -82,7 +63,7 @@ TestCurves load_test_curves(const TestCurvesSpec& spec) {
       }
       continue;
     }
-    const auto f = split(line);
+    const auto f = csv::split_line(line);
     if (f.size() > header.size())
       throw InputError(file, line_no, "more values (" + std::to_string(f.size()) + ") than header columns (" +
                                           std::to_string(header.size()) + ")");

@@ -8,40 +8,18 @@
 #include <cmath>
 #include <fstream>
 
+#include "csv_fields.hpp"
 #include "hbm/corridors/input_error.hpp"
 
 namespace hbm::corridors {
 namespace {
 
-std::string trim(std::string_view s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return std::string(s.substr(b, e - b));
-}
+using csv::trim;
+using csv::split_line;
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-/// Splits on commas, honouring double quotes (a quoted field may contain commas).
-std::vector<std::string> split_csv_line(std::string_view line) {
-  std::vector<std::string> fields;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur.push_back(c);
-    }
-  }
-  fields.push_back(trim(cur));
-  return fields;
 }
 
 bool parse_double(const std::string& s, double& v) {
@@ -83,7 +61,7 @@ TimeHistoryTable read_time_history_csv(const std::filesystem::path& path) {
     if (tl.empty()) continue;
     if (!have_header) {
       if (tl[0] == '#') continue;
-      t.headers = split_csv_line(tl);
+      t.headers = split_line(tl);
       t.header_line = line_no;
       for (const auto& h : t.headers) {
         std::string n, u;
@@ -109,7 +87,7 @@ TimeHistoryTable read_time_history_csv(const std::filesystem::path& path) {
       continue;
     }
     if (tl[0] == '#') continue;
-    const auto fields = split_csv_line(tl);
+    const auto fields = split_line(tl);
     if (fields.size() != t.headers.size())
       throw InputError(t.path, line_no,
                        "expected " + std::to_string(t.headers.size()) + " comma-separated values "

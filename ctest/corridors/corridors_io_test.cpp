@@ -5,14 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <unistd.h>
 
 #include "hbm/corridors/case_definition.hpp"
 #include "hbm/corridors/corridor.hpp"
 #include "hbm/corridors/cross_plot.hpp"
 #include "hbm/corridors/input_error.hpp"
+#include "corridors_test_support.hpp"
 #include "hbm/corridors/time_history_csv.hpp"
 #include "hbm/corridors/units.hpp"
 
@@ -21,24 +19,12 @@ using namespace hbm::corridors;
 
 namespace {
 
+using test_support::data_dir;
+using test_support::error_of;
+
 fs::path temp_file(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("hbm_corridors_io_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return test_support::temp_file("hbm_corridors_io", name, text);
 }
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-const std::string data_dir = std::string(HBM_CORRIDORS_SOURCE_DIR) + "/data/";
 
 }  // namespace
 
@@ -95,12 +81,7 @@ TEST(CaseDefinition, ShippedCasesLoad) {
 TEST(CaseDefinition, ErrorsPointAtTheLine) {
   const std::string head =
       "[case]\nname = \"t\"\n\n[[signal]]\nname = \"f\"\ncolumn = \"impactor AX\"\n";  // lines 1-6
-  struct Bad {
-    std::string tail;
-    int line;
-    std::string words;
-  };
-  const std::vector<Bad> cases{
+  test_support::expect_case_errors("hbm_corridors_io", head, {
       {"cfc = 123\n", 7, "not an SAE J211 channel class"},
       {"colour = 1\n", 7, "unknown key 'colour'"},
       {"unit = \"furlong\"\n", 7, "unknown unit"},
@@ -108,14 +89,7 @@ TEST(CaseDefinition, ErrorsPointAtTheLine) {
       {"cfc = \n", 7, ""},  // TOML syntax error
       {"\n[[criterion]]\nkind = \"hic\"\nsignal = \"g\"\n", 8, "undefined signal 'g'"},
       {"\n[[rating]]\nname = \"r\"\nkind = \"cross\"\nsignal = \"f\"\n", 8, "needs x_signal"},
-  };
-  for (const auto& b : cases) {
-    const auto p = temp_file("bad.toml", head + b.tail);
-    const std::string msg = error_of([&] { load_case(p); });
-    SCOPED_TRACE(msg);
-    EXPECT_NE(msg.find("bad.toml:" + std::to_string(b.line) + ":"), std::string::npos);
-    EXPECT_NE(msg.find(b.words), std::string::npos);
-  }
+  });
 }
 
 TEST(Corridor, LebarbeLoadsWithSourceLines) {

@@ -7,13 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <unistd.h>
 
 #include "hbm/corridors/case_definition.hpp"
 #include "hbm/corridors/corridor.hpp"
 #include "hbm/corridors/input_error.hpp"
+#include "corridors_test_support.hpp"
 #include "hbm/corridors/test_curves.hpp"
 
 namespace fs = std::filesystem;
@@ -21,24 +19,12 @@ using namespace hbm::corridors;
 
 namespace {
 
+using test_support::data_dir;
+using test_support::error_of;
+
 fs::path temp_file(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("hbm_corridors_tests_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return test_support::temp_file("hbm_corridors_tests", name, text);
 }
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-const std::string data_dir = std::string(HBM_CORRIDORS_SOURCE_DIR) + "/data/";
 
 Polyline line(std::vector<double> x, double slope, double offset) {
   Polyline p;
@@ -136,25 +122,13 @@ TEST(TestCurves, CaseFileKeysGoTogether) {
       "[case]\nname = \"t\"\n\n[[signal]]\nname = \"f\"\ncolumn = \"impactor AX\"\n\n"
       "[[rating]]\nname = \"r\"\nkind = \"time\"\nsignal = \"f\"\n[rating.corridor]\n"
       "file = \"corr.csv\"\nx_column = \"x\"\ny_column = \"y\"\nx_unit = \"ms\"\ny_unit = \"kN\"\n";  // lines 1-17
-  struct Bad {
-    std::string tail;
-    int line;
-    std::string words;
-  };
-  const std::vector<Bad> bad{
+  test_support::expect_case_errors("hbm_corridors_tests", head, {
       {"tests_file = \"t.csv\"\n", 18, "go together"},
       {"tests = [[\"A_t\", \"A_f\"]]\n", 18, "go together"},
       {"mean = \"mean\"\ntests_file = \"t.csv\"\ntests = [[\"A_t\", \"A_f\"]]\n", 19, "not both"},
       {"tests_file = \"t.csv\"\ntests = [\"A_t\", \"A_f\"]\n", 19, "pairs"},
       {"tests_file = \"none.csv\"\ntests = [[\"A_t\", \"A_f\"]]\n", 18, "not found"},
-  };
-  for (const auto& b : bad) {
-    const auto p = temp_file("bad.toml", head + b.tail);
-    const std::string msg = error_of([&] { load_case(p); });
-    SCOPED_TRACE(msg);
-    EXPECT_NE(msg.find("bad.toml:" + std::to_string(b.line) + ":"), std::string::npos);
-    EXPECT_NE(msg.find(b.words), std::string::npos);
-  }
+  });
   const auto good = temp_file("good.toml", head + "tests_file = \"t.csv\"\ntests = [[\"A_t\", \"A_f\"]]\n");
   const auto cd = load_case(good);
   const Corridor c = load_corridor(cd.ratings.at(0).corridor);

@@ -3,6 +3,7 @@
 #include "core/th_requests.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 
 namespace hbm::solver {
@@ -51,6 +52,25 @@ std::optional<ThProbe> node_probe(const Model& m, Index node, const std::string&
   return std::nullopt;
 }
 
+// Element-lumped part quantities (KE, momentum, centre of gravity): each node of an element
+// of the part carries its mass shared among the element slots at it (its element count over
+// all parts), so that the parts' sums add up to the nodes' total. Calls f(node, 1 / slots).
+template <class F>
+void for_each_slot(const std::vector<const ElementGroup*>& groups, const Model& m, F&& f) {
+  for (auto* g : groups)
+    for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
+      const auto i = static_cast<std::size_t>(g->connectivity[k]);
+      f(i, 1.0 / static_cast<double>(m.incidence_start[i + 1] - m.incidence_start[i]));
+    }
+}
+
+// Velocity at the output time from the half-step velocity and the acceleration.
+std::array<double, 3> output_velocity(const Model& m, std::size_t i) {
+  const NodalState& n = m.nodes;
+  const double h = 0.5 * m.dt_output;
+  return {n.v.x[i] - h * n.a.x[i], n.v.y[i] - h * n.a.y[i], n.v.z[i] - h * n.a.z[i]};
+}
+
 std::optional<ThProbe> part_probe(const Model& m, Index part, const std::string& var) {
   const Part& pt = m.parts[static_cast<std::size_t>(part)];
   ThProbe p{"part", pt.id, pt.title, var, Dimension::Energy, {}};
@@ -64,55 +84,38 @@ std::optional<ThProbe> part_probe(const Model& m, Index part, const std::string&
   } else if (var == "HE") {
     p.read = [groups] { double s = 0; for (auto* g : groups) s += g->energy.hourglass; return s; };
   } else if (var == "KE") {
-    // Element-lumped: each element node carries m_node / (number of element slots at it).
     p.read = [groups, mp] {
-      const NodalState& n = mp->nodes;
       double s = 0;
-      for (auto* g : groups)
-        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
-          const auto i = static_cast<std::size_t>(g->connectivity[k]);
-          const auto share = static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
-          const double vx = n.v.x[i] - 0.5 * mp->dt_output * n.a.x[i], vy = n.v.y[i] - 0.5 * mp->dt_output * n.a.y[i],
-                       vz = n.v.z[i] - 0.5 * mp->dt_output * n.a.z[i];
-          s += 0.5 * n.mass[i] / share * (vx * vx + vy * vy + vz * vz);
-        }
+      for_each_slot(groups, *mp, [&](std::size_t i, double share) {
+        const auto v = output_velocity(*mp, i);
+        s += 0.5 * mp->nodes.mass[i] * share * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      });
       return s;
     };
   } else if (var == "XMOM" || var == "YMOM" || var == "ZMOM") {
-    // Momentum of the part's element nodes, lumped as KE: each node carries its mass (with
-    // added mass, the mass the run integrates) shared among the element slots at it, so the
-    // parts' momenta add up to the nodes' total. A rigid body's main node is in no part.
+    // With the mass the run integrates (added mass included), lumped as KE, so the parts'
+    // momenta add up to the nodes' total. A rigid body's main node is in no part.
     p.unit = Dimension::Momentum;
     const int d = var[0] - 'X';
     p.read = [groups, mp, d] {
-      const NodalState& n = mp->nodes;
       double s = 0;
-      for (auto* g : groups)
-        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
-          const auto i = static_cast<std::size_t>(g->connectivity[k]);
-          const auto share = static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
-          const double v = d == 0 ? n.v.x[i] - 0.5 * mp->dt_output * n.a.x[i]
-                           : d == 1 ? n.v.y[i] - 0.5 * mp->dt_output * n.a.y[i]
-                                    : n.v.z[i] - 0.5 * mp->dt_output * n.a.z[i];
-          s += n.mass[i] / share * v;
-        }
+      for_each_slot(groups, *mp, [&](std::size_t i, double share) {
+        s += mp->nodes.mass[i] * share * output_velocity(*mp, i)[d];
+      });
       return s;
     };
   } else if (var == "XCG" || var == "YCG" || var == "ZCG") {
-    // Centre of gravity of the part's element nodes, weighted by their physical lumped
-    // mass shared among the element slots at each node (the lumping of KE and XMOM).
+    // Weighted by the physical lumped mass, with the lumping of KE and momentum.
     p.unit = Dimension::Length;
     const int d = var[0] - 'X';
     p.read = [groups, mp, d] {
       const NodalState& n = mp->nodes;
       double s = 0, w = 0;
-      for (auto* g : groups)
-        for (std::size_t k = 0; k < g->connectivity.size(); ++k) {
-          const auto i = static_cast<std::size_t>(g->connectivity[k]);
-          const double mi = n.mass0[i] / static_cast<double>(mp->incidence_start[i + 1] - mp->incidence_start[i]);
-          s += mi * (d == 0 ? n.x.x[i] : d == 1 ? n.x.y[i] : n.x.z[i]);
-          w += mi;
-        }
+      for_each_slot(groups, *mp, [&](std::size_t i, double share) {
+        const double mi = n.mass0[i] * share;
+        s += mi * (d == 0 ? n.x.x[i] : d == 1 ? n.x.y[i] : n.x.z[i]);
+        w += mi;
+      });
       return w > 0 ? s / w : 0.0;
     };
   } else if (var == "MASS") {
