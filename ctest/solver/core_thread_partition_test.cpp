@@ -95,7 +95,9 @@ BlockState run_block(int threads, int cycles) {
   make_block(m);
   CycleState c;
   for (int k = 0; k < cycles; ++k) run_cycle(m, c);
-  if (threads > 1) EXPECT_TRUE(c.partition.active_for(threads)) << threads;
+  if (threads > 1) {
+    EXPECT_TRUE(c.partition.active_for(threads)) << threads;
+  }
   BlockState s;
   for (const auto* a : {&m.nodes.x.x, &m.nodes.x.y, &m.nodes.x.z}) s.x.insert(s.x.end(), a->begin(), a->end());
   for (const auto* a : {&m.nodes.v.x, &m.nodes.v.y, &m.nodes.v.z}) s.v.insert(s.v.end(), a->begin(), a->end());
