@@ -229,7 +229,7 @@ RatingDef read_rating(const TableReader& r, const std::filesystem::path& case_di
   s.upper_label = c.str("upper", "upper");
   s.lower_label = c.str("lower", "lower");
   s.mean_label = c.str("mean", "");
-  // Reference = average of individual tests (docs/corridors.md, "Reference curve").
+  // Reference = the average of individual tests (test_curves.hpp; docs/corridors.md, Ratings).
   if (c.has("tests_file") || c.has("tests")) {
     if (!c.has("tests_file") || !c.has("tests"))
       throw InputError(r.file(), c.line_of(c.has("tests") ? "tests" : "tests_file"),

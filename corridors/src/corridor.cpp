@@ -14,7 +14,6 @@
 
 namespace hbm::corridors {
 
-
 Corridor load_corridor(const CorridorSpec& spec) {
   Corridor c;
   c.file = spec.file.string();
