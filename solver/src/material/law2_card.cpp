@@ -44,14 +44,15 @@ bool read_law2_hardening(BuildContext& ctx, const hbm::deck::Card& m, Plasticity
   }
   // ICC (0 -> 1): 1 = SIG_max0 scaled by the rate term as the yield stress is, 2 = not.
   jc.rate_scales_sig_max = m.integer(kRate, "ICC") != 2;
-  // Strain rate filter (OpenRadioss: the rate of a rate-dependent LAW2 is always filtered
-  // at F_cut; with F_cut 0 its starter warns). Here F_cut 0 uses the rate of each step, with
-  // a warning naming the difference.
+  // Strain rate filter at F_cut. F_cut 0 with c > 0: the rate of each step, unfiltered, as
+  // OpenRadioss (hm_read_mat02_jc: asrate = 1e20, so m2law's weight min(1, asrate dt) is 1;
+  // its starter warns, message 1220). Its plastic-strain-rate option VP = 1, which forces
+  // F_cut to 10 kHz, is not on this card.
   const double fcut = m.real(kRate, "F_cut");
   pl.rate_filter = jc.c > 0 && fcut > 0 ? 2.0 * M_PI * fcut : 0.0;
   if (jc.c > 0 && fcut == 0.0)
-    ctx.warning(m, "F_cut = 0 with c > 0: the strain rate of each step is used unfiltered (OpenRadioss "
-                   "filters it at F_cut and warns; give F_cut, e.g. 10 kHz in the work time unit, for the same run)");
+    ctx.warning(m, "F_cut = 0 with c > 0: the strain rate of each step is used unfiltered, as in OpenRadioss "
+                   "(give F_cut, e.g. 10 kHz in the work time unit, to filter it)");
   return true;
 }
 

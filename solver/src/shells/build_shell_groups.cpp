@@ -157,7 +157,11 @@ static SmallStrainSwitch read_shell_small_strain_switch(BuildContext& ctx, std::
     sw.enabled = true;
     sw.tsca = c->real(0, "Tsca");
     sw.tmin = c->real(0, "Tmin");
-    if (!(sw.tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", cat("must be > 0 for ", keyword));
+    // Tmin 0: as /DT/BRICK/CST, OpenRadioss falls back to the /DT Tmin, 0 without one, and
+    // its test (cdt3.F, c3dt3.F) never switches a shell.
+    if (sw.tmin == 0.0)
+      ctx.warning(*c, cat("Tmin = 0: no element switches to small strain under ", keyword,
+                          " (as in OpenRadioss without a /DT Tmin)"));
   }
   return sw;
 }

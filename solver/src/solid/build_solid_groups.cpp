@@ -179,7 +179,12 @@ SmallStrainSwitch read_small_strain_switch(BuildContext& ctx) {
     sw.enabled = true;
     sw.tsca = c->real(0, "Tsca");
     sw.tmin = c->real(0, "Tmin");
-    if (!(sw.tmin > 0)) ctx.error(*c, c->lines.at(0), "Tmin", "must be > 0 for /DT/BRICK/CST");
+    // Tmin 0: OpenRadioss takes the /DT Tmin then (lectur.F), 0 when none is given (this
+    // deck subset has no /DT card), and its time step test (mqviscb.F) never switches a
+    // brick; VDEF_min still acts.
+    if (sw.tmin == 0.0)
+      ctx.warning(*c, "Tmin = 0: the time step never switches a brick to small strain (as in OpenRadioss "
+                      "without a /DT Tmin); only VDEF_min can");
     if (c->lines.size() > 1) {
       if (c->real(1, "ASP_min") > 0)
         ctx.error(*c, c->lines.at(1), "ASP_min", "not supported (tetra collapse switch); use 0");
