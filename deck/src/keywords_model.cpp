@@ -105,7 +105,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     if (beam) {
       k.lines.push_back(line("line 1", {
           real_field("Mass", 0, Dimension::Mass, kNonNegative, 0, "spring mass"),
-          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia"),
+          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia (<= 1e-20 reads as 1e-20, as in OpenRadioss)"),
           id_field("skew_id", 40, RefKind::Skew, false, "skew system"),
           id_field("sens_id", 50, RefKind::Sensor, false, "sensor"),
           int_field("Isflag", 60, 0, 2, 0, "sensor flag"),
@@ -116,7 +116,7 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
     } else {
       k.lines.push_back(line("line 1", {
           real_field("Mass", 0, Dimension::Mass, kNonNegative, 0, "spring mass"),
-          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia (I)"),
+          real_field("Inertia", 20, Dimension::Inertia, kNonNegative, 0, "spring inertia I (<= 1e-20 reads as 1e-20, as in OpenRadioss)"),
           id_field("skew_id", 40, RefKind::Skew, false, "skew system"),
           id_field("sens_id", 50, RefKind::Sensor, false, "sensor"),
           int_field("Isflag", 60, 0, 2, 0, "sensor flag"),

@@ -144,10 +144,14 @@ bool read_property(BuildContext& ctx, const hbm::deck::Card& c, SpringProperty& 
     p.dofs.resize(6);
     for (std::size_t d = 0; d < 6; ++d) ok = read_dof(ctx, c, 1 + 3 * d, dof_names(false, d), p.dofs[d]) && ok;
     const bool rot = p.type == SpringType::Beam || springs::has_rotational_law(p);
-    if (rot && !(p.inertia > 0)) {
-      ctx.error(c, c.lines.at(0), "Inertia",
-                "rotational DOFs need the spring inertia Inertia > 0 (half goes to each node)");
-      ok = false;
+    // OpenRadioss (hm_read_prop08.F, hm_read_prop13.F): an inertia <= 1e-20 becomes 1e-20,
+    // with its warning 445 (NULL INERTIA). Half of it goes to each node.
+    if (p.inertia <= 1e-20) {
+      p.inertia = 1e-20;
+      if (rot)
+        ctx.warning(c, "Inertia <= 1e-20 is set to 1e-20, as in OpenRadioss (its warning 445, NULL INERTIA): the "
+                       "rotations of the spring's nodes then take their inertia from /DT/NODA/CST or need a tiny "
+                       "time step");
     }
   }
   return ok;
