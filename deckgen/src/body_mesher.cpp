@@ -5,6 +5,7 @@
 // and pelvis are shells on the inner-wall ring sharing the hexahedra nodes (as in the
 // seed model); head and limbs are shell envelopes in rigid bodies.
 #include "hbm/deckgen/body_mesher.hpp"
+#include "hbm/deckgen/rib_fracture.hpp"
 
 #include "hbm/deckgen/surface_tools.hpp"
 #include "hbm/deckgen/trunk_grid.hpp"
@@ -602,6 +603,8 @@ void Builder::build_ribcage() {
     struct Elem { std::array<int, 3> t; double th; };
     std::vector<Elem> elems;
     double real_mass_area = 0, model_volume = 0;
+    double fibre_ratio_sum = 0;  // t_eq / w over the strip's cells (rib fracture model)
+    int cells = 0;
     for (int j = j0; j <= jh; ++j) {
       double s = (jh - j + 0.5) / (jh - j0 + 1);  // abscissa 0 at the head, 1 at the end
       auto interp = [&](const double v[3]) { return s < 0.5 ? v[0] + (v[1] - v[0]) * s / 0.5 : v[1] + (v[2] - v[1]) * (s - 0.5) / 0.5; };
@@ -611,6 +614,8 @@ void Builder::build_ribcage() {
         int jj = left ? j : N - 1 - j;
         auto [bh, len] = band(l, jj);
         double teq = equivalent_rib_thickness(h, w, t, bh);
+        fibre_ratio_sum += teq / w;
+        ++cells;
         real_mass_area += hollow_ellipse_area(h, w, t) * len;
         model_volume += bh * len * teq;
         for (const auto& tri : split(l, jj, left)) elems.push_back({tri, teq});
@@ -622,8 +627,24 @@ void Builder::build_ribcage() {
     rm.rho *= real_mass_area / model_volume;
     rm.E *= real_mass_area / model_volume;
     rm.source += "; E and density scaled by real/strip section area (equivalent strip, calibration.md)";
+    const bool fracture = o_.rib_fracture_age >= 0;
+    if (fracture) {
+      // Elastoplastic strip with deletion at the bone's failure strain (rib_fracture.hpp): yields
+      // and breaks at the real section's curvatures through the model's 3-point shells.
+      const StripPlasticity sp = strip_plasticity(g_.rib_bone, o_.rib_fracture_age, real_mass_area / model_volume,
+                                                  fibre_ratio_sum / cells, three_point_outer_zeta());
+      rm.law = "LAW2";
+      rm.yield = sp.yield_stress * kModulus;
+      rm.hardening = sp.plastic_modulus * kModulus;
+      rm.eps_p_max = sp.eps_p_max;
+      rm.source += "; elastoplastic with failure at the median ultimate strain of a " + std::to_string(std::lround(o_.rib_fracture_age)) +
+                   "-year-old (rib_fracture.csv, rib_fracture.hpp)";
+    }
     int mi = m_.add_material(rm);
     int p = part(rm.name, ElementKind::Tria, mi, "thorax", "ribs");
+    // An element is deleted when two of its three through-thickness points have failed:
+    // both outer fibres, i.e. a fracture through the section.
+    if (fracture) m_.parts[static_cast<std::size_t>(p)].fail_fraction = 0.5;
     for (const auto& e : elems) {
       tria(p, e.t, e.th);
       cage_segments_.push_back({e.t[0], e.t[1], e.t[2], e.t[2]});

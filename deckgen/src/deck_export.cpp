@@ -77,6 +77,17 @@ Deck model_cards(const FeModel& m, const std::string& title) {
     std::string t = mat.name;
     if (mat.law == "LAW1") {
       CardBuilder(d, "/MAT/LAW1", mat.id, t).set(0, "rho", mat.rho).set(1, "E", mat.E).set(1, "nu", mat.nu).commit();
+    } else if (mat.law == "LAW2") {
+      // Linear hardening (n = 1), no rate term; element deletion at EPS_p_max.
+      CardBuilder(d, "/MAT/LAW2", mat.id, t)
+          .set(0, "rho", mat.rho)
+          .set(1, "E", mat.E)
+          .set(1, "nu", mat.nu)
+          .set(2, "a", mat.yield)
+          .set(2, "b", mat.hardening)
+          .set(2, "n", 1.0)
+          .set(2, "EPS_p_max", mat.eps_p_max)
+          .commit();
     } else {
       CardBuilder(d, "/MAT/LAW34", mat.id, t)
           .set(0, "rho", mat.rho)
@@ -121,12 +132,13 @@ Deck model_cards(const FeModel& m, const std::string& title) {
     // (OpenRadioss /PROP/TYPE1); skin, pelvis cortex and scapula quads warp up to 15 deg,
     // and QEPH (24) is not in the project engine (Ishell 0-4). Ish3n 2: C0 triangle with
     // the large-rotation correction (the OpenRadioss default).
-    CardBuilder(d, "/PROP/TYPE1", shell_prop_id(p), "shell " + p.name)
-        .set_int(0, "Ishell", 4)
+    CardBuilder c(d, "/PROP/TYPE1", shell_prop_id(p), "shell " + p.name);
+    c.set_int(0, "Ishell", 4)
         .set_int(0, "Ish3n", 2)
-        .set_int(2, "N", 3)
-        .set(2, "Thick", p.thickness > 0 ? p.thickness : 1.0)
-        .commit();
+        .set_int(2, "N", 3)  // three Gauss points: rib_fracture.hpp's three_point_outer_zeta
+        .set(2, "Thick", p.thickness > 0 ? p.thickness : 1.0);
+    if (p.fail_fraction > 0) c.set(0, "P_thick_fail", p.fail_fraction);
+    c.commit();
   }
   for (const FeSpringProp& s : m.spring_props) {
     if (s.type == 4) {

@@ -325,6 +325,43 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
   return out;
 }
 
+// Rib cortical bone beyond yield (rib_fracture.csv): one row per quantity.
+RibBoneFailure read_rib_fracture(const std::filesystem::path& file, double E) {
+  Table t = Table::read(file);
+  std::map<std::string, std::pair<double, int>> q;
+  for (const auto& r : t.rows()) {
+    const std::string name = t.text(r, "quantity");
+    if (q.count(name)) t.fail(r, "quantity", "duplicate quantity '" + name + "'");
+    if (t.text(r, "source").empty()) t.fail(r, "source", "every quantity needs its source");
+    q[name] = {t.number(r, "value"), r.line};
+  }
+  auto get = [&](const char* name, double lo, double hi) {
+    auto it = q.find(name);
+    if (it == q.end()) throw SourceError(file, t.rows().empty() ? 0 : t.rows().back().line, "quantity", std::string("'") + name + "' is missing");
+    const double v = it->second.first;
+    if (!(v >= lo && v <= hi))
+      throw SourceError(file, it->second.second, "value", std::string(name) + " = " + std::to_string(v) + " is outside [" +
+                                                             std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v;
+  };
+  RibBoneFailure b;
+  b.E = E;
+  b.yield_stress = get("yield_stress", 1, 1000);
+  b.plastic_modulus = get("plastic_modulus", 0, 1e5);
+  b.log_median_intercept = get("ultimate_strain_log_median_intercept", -10, 0);
+  b.log_median_age_slope = get("ultimate_strain_log_median_age_slope", -1, 1);
+  b.age_min = get("age_min", 0, 120);
+  b.age_max = get("age_max", 0, 120);
+  b.line_age = q["age_min"].second;
+  if (b.age_max <= b.age_min) throw SourceError(file, q["age_max"].second, "value", "age_max must exceed age_min");
+  // The failure strain must lie beyond yield over the whole age range.
+  for (double age : {b.age_min, b.age_max})
+    if (b.ultimate_strain(age) <= b.yield_strain())
+      throw SourceError(file, q["ultimate_strain_log_median_intercept"].second, "value",
+                        "the median ultimate strain at " + std::to_string(age) + " y is below the yield strain");
+  return b;
+}
+
 std::map<std::string, double> read_disc_stiffness(const std::filesystem::path& file) {
   Table t = Table::read(file);
   std::map<std::string, double> out;
@@ -367,6 +404,7 @@ GeometrySources load_geometry(const std::filesystem::path& dir) {
   g.targets = read_targets(dir / "segment_targets.csv");
   g.shell_sections = read_shell_sections(dir / "shell_sections.csv");
   g.disc_stiffness = read_disc_stiffness(dir / "disc_stiffness.csv");
+  g.rib_bone = read_rib_fracture(dir / "rib_fracture.csv", g.material("rib_cortical").e_or_k);
   g.skeleton = Skeleton::read(dir / "skeleton.urdf");
   return g;
 }

@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
   bool flesh_bricks = false;
   app.add_flag("--flesh-bricks", flesh_bricks,
                "torso flesh as two rings of one-point bricks (the layout before 2026-11-24; docs/engine-design.md section 12.10)");
+  double rib_fracture_age = -1;
+  app.add_option("--rib-fracture", rib_fracture_age,
+                 "AGE (years): elastoplastic ribs deleted at the median failure strain of that age (rib fracture model; "
+                 "default: elastic ribs)");
   CLI11_PARSE(app, argc, argv);
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -61,10 +65,21 @@ int main(int argc, char** argv) {
     }
     dg::MesherOptions o;
     o.flesh_tetra = !flesh_bricks;
+    if (app.count("--rib-fracture")) {
+      const auto& b = g.rib_bone;
+      if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max))
+        throw std::invalid_argument("--rib-fracture " + std::to_string(rib_fracture_age) + ": the failure strain fit of " +
+                                    (g.dir / "rib_fracture.csv").string() + " covers ages " + std::to_string(b.age_min) + " to " +
+                                    std::to_string(b.age_max) + " years");
+      o.rib_fracture_age = rib_fracture_age;
+    }
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
     dg::assign_rigid_body_masses(m, g, lm);
     m.notes.push_back("hbm-deckgen: 50th percentile male driver model from geometry sources " + g.dir.filename().string() + "/ (units kg mm ms)");
+    if (o.rib_fracture_age >= 0)
+      m.notes.push_back("rib fracture model: elastoplastic ribs deleted at the median failure strain at " +
+                        std::to_string(std::lround(o.rib_fracture_age)) + " years (--rib-fracture)");
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";
     bool ok = dg::print_budget(std::cout, dg::element_budget(m), 10000, 12000);

@@ -26,6 +26,9 @@ struct MesherOptions {
   // (body_mesher.cpp build_tetra_flesh); false: two rings of one-point bricks, whose
   // hourglass energy issue #8 does not accept (docs/engine-design.md §12.10).
   bool flesh_tetra = true;
+  // Rib fracture model (rib_fracture.hpp): elastoplastic rib strips deleted at the failure
+  // strain of a subject of this age [years]; < 0: elastic ribs (the default model).
+  double rib_fracture_age = -1;
 };
 
 // Landmarks of the built model used by the checks (region boundaries for the trunk CoG).

@@ -20,8 +20,9 @@ enum class ElementKind { Brick, Tetra, Shell, Tria, Spring };
 // Material in model units (density kg/mm^3, moduli GPa, beta 1/ms).
 struct FeMaterial {
   int id = 0;
-  std::string name, law;  // LAW1 / LAW34
-  double rho = 0, E = 0, nu = 0;      // LAW1
+  std::string name, law;  // LAW1 / LAW2 / LAW34
+  double rho = 0, E = 0, nu = 0;      // LAW1, LAW2
+  double yield = 0, hardening = 0, eps_p_max = 0;  // LAW2: sigma_y = yield + hardening eps_p, deletion at eps_p_max
   double K = 0, G0 = 0, Ginf = 0, beta = 0;  // LAW34
   std::string source;
   // Dilatational wave speed (mm/ms) for solids, plate wave speed for shells.
@@ -49,6 +50,7 @@ struct FePart {
   std::string segment;     // head, neck, thorax, abdomen, pelvis, humerus_r, ...
   std::string region;      // budget region (ribs, organs, spine, ...)
   bool rigid = false;      // all its nodes are in rigid bodies
+  double fail_fraction = 0;  // shells: P_thick_fail (0: all through-thickness points fail)
 };
 
 struct FeRigidBody {

@@ -5,6 +5,7 @@
 // FeModel conversion to kg-mm-ms happens in the mesher.
 #pragma once
 
+#include "hbm/deckgen/rib_fracture.hpp"
 #include "hbm/deckgen/skeleton.hpp"
 
 #include <Eigen/Core>
@@ -111,6 +112,7 @@ struct GeometrySources {
   std::vector<SegmentTarget> targets;
   std::map<std::string, ShellSection> shell_sections;
   std::map<std::string, double> disc_stiffness;  // N/mm, by disc name (T1T2 ... L5S1)
+  RibBoneFailure rib_bone;                        // rib_fracture.csv (E: materials.csv rib_cortical)
   Skeleton skeleton;
 
   const VertebraLandmarks& vertebra(const std::string& name) const;
