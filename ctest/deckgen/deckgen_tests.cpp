@@ -553,3 +553,106 @@ TEST(Surface, ExportThenImportRoundTrip) {
   std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
   EXPECT_THROW(import_surface(bad), SourceError);
 }
+
+// Rib fracture model (--rib-fracture AGE, rib_fracture.hpp): every rib strip becomes LAW2
+// whose yield and failure strains are the bone's times k = zeta t_eq / w (the strip then
+// yields and breaks at the real section's curvatures: shells_rib_strip_fracture_verification);
+// the older subject's ribs break at a lower strain (Larsson 2021 median: 2.81 % at 45 y,
+// 1.90 % at 75 y); the elastic model is unchanged.
+TEST(RibFracture, RibStripsBecomeElastoplasticWithAgeDependentFailure) {
+  const GeometrySources& g = model().g;
+  auto build = [&](double age) {
+    MesherOptions o;
+    o.rib_fracture_age = age;
+    return build_body_model(g, o);
+  };
+  const FeModel young = build(45), old = build(75);
+  EXPECT_NEAR(g.rib_bone.ultimate_strain(45), 0.0281, 5e-4);
+  EXPECT_NEAR(g.rib_bone.ultimate_strain(75), 0.0190, 5e-4);
+  int ribs = 0;
+  for (std::size_t i = 0; i < young.parts.size(); ++i) {
+    const FePart& p = young.parts[i];
+    const FeMaterial& ym = young.materials[static_cast<std::size_t>(p.material)];
+    const FeMaterial& om = old.materials[static_cast<std::size_t>(old.parts[i].material)];
+    const FeMaterial& em = model().m.materials[static_cast<std::size_t>(model().m.parts[i].material)];
+    if (p.region != "ribs") {
+      EXPECT_NE(ym.law, "LAW2") << p.name;
+      EXPECT_EQ(p.fail_fraction, 0.0) << p.name;
+      continue;
+    }
+    ++ribs;
+    EXPECT_EQ(em.law, "LAW1") << p.name << ": the default model keeps elastic ribs";
+    ASSERT_EQ(ym.law, "LAW2") << p.name;
+    EXPECT_DOUBLE_EQ(ym.E, em.E) << p.name;      // same strip stiffness
+    EXPECT_DOUBLE_EQ(p.fail_fraction, 0.5) << p.name;
+    // Strip yield strain over the bone's: k = zeta t_eq / w, 0.88-0.91 for the hollow rib
+    // sections of rib_cage.csv (t_eq / w 1.13-1.17, zeta = sqrt(3/5) = 0.775).
+    const double k = (ym.yield / ym.E) / g.rib_bone.yield_strain();
+    EXPECT_GT(k, 0.87) << p.name;
+    EXPECT_LT(k, 0.92) << p.name;
+    EXPECT_NEAR(ym.hardening / ym.E, g.rib_bone.plastic_modulus / g.rib_bone.E, 1e-12) << p.name;
+    const double ratio = 1 + g.rib_bone.plastic_modulus / g.rib_bone.E;
+    EXPECT_NEAR(ym.eps_p_max, k * (g.rib_bone.ultimate_strain(45) - g.rib_bone.yield_strain()) / ratio, 1e-12) << p.name;
+    EXPECT_NEAR(om.eps_p_max, k * (g.rib_bone.ultimate_strain(75) - g.rib_bone.yield_strain()) / ratio, 1e-12) << p.name;
+  }
+  EXPECT_EQ(ribs, 12);
+  // The card: /MAT/LAW2 with a b n EPS_p_max, P_thick_fail on the rib properties; it reads back.
+  hbm::deck::Deck d = model_cards(young, "t");
+  std::ostringstream os;
+  hbm::deck::write_deck(os, d);
+  const std::string text = os.str();
+  EXPECT_NE(text.find("/MAT/LAW2/"), std::string::npos);
+  fs::path dir = fs::temp_directory_path() / "hbm_deckgen_test_ribfracture";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_model_include(dir / "m.inc", young, "t");
+  write_drop_decks(dir, "m_drop", "m.inc", young, DropTest{});
+  auto r = hbm::deck::read_deck(dir / "m_drop_0000.rad", hbm::deck::Section::Starter);
+  std::ostringstream diag;
+  hbm::deck::print_diagnostics(diag, r);
+  EXPECT_TRUE(r.ok()) << diag.str();
+  int law2 = 0;
+  for (const hbm::deck::Card* c : r.deck.cards_of("/MAT/LAW2")) {
+    ++law2;
+    EXPECT_GT(c->real(2, "EPS_p_max"), 0.0);
+  }
+  EXPECT_EQ(law2, 12);
+}
+
+TEST(RibFracture, BadSourceValuesStopWithFileLine) {
+  struct Case { std::string from, to, expect; };
+  const std::vector<Case> cases = {
+      {"yield_stress,101.4,", "yield_stress,-5,", "value"},
+      {"ultimate_strain_log_median_intercept,-2.9866,", "ultimate_strain_log_median_intercept,-6,", "below the yield strain"},
+      {"age_max,99,", "age_max,10,", "age_max must exceed age_min"},
+      {"plastic_modulus,2493,MPa,VIVA+ (Iraeus 2020) rib cortical curve: (139.3 - 101.4) MPa over 0.0152 plastic strain\n", "",
+       "'plastic_modulus' is missing"},
+  };
+  for (const Case& c : cases) {
+    fs::path d = copy_geometry("ribfracture");
+    replace_in_file(d / "rib_fracture.csv", c.from, c.to);
+    try {
+      load_geometry(d);
+      ADD_FAILURE() << "no error for " << c.to;
+    } catch (const SourceError& e) {
+      const std::string w = e.what();
+      EXPECT_NE(w.find("rib_fracture.csv:"), std::string::npos) << w;
+      EXPECT_NE(w.find(c.expect), std::string::npos) << w;
+    }
+  }
+}
+
+TEST(RibFracture, AgeOutsideTheFitExitsOneAndWritesNothing) {
+  fs::path out = fs::temp_directory_path() / "hbm_deckgen_test_ribage_out";
+  fs::remove_all(out);
+  const std::string log = (fs::temp_directory_path() / "hbm_deckgen_test_ribage.log").string();
+  std::string cmd = std::string(HBM_DECKGEN_EXE) + " -g " + kGeometry.string() + " -o " + out.string() +
+                    " --rib-fracture 150 > " + log + " 2>&1";
+  int rc = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 1);
+  EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_NE(ss.str().find("rib_fracture.csv covers ages 17"), std::string::npos) << ss.str();
+}
