@@ -142,12 +142,14 @@ std::vector<const toml::table*> table_array(const toml::table& root, const char*
 }
 
 SignalDef read_signal(const TableReader& r) {
-  r.only({"name", "file", "column", "unit", "scale", "scaled_unit", "to_unit", "cfc", "combine", "of", "zero_at_time_zero"});
+  r.only({"name", "file", "column", "sum_columns", "unit", "scale", "scaled_unit", "to_unit", "cfc", "combine", "of",
+          "zero_at_time_zero"});
   SignalDef s;
   s.line = r.line();
   s.name = r.str("name", "", true);
   s.file = r.str("file", "");
   s.column = r.str("column", "");
+  s.sum_columns = r.boolean("sum_columns", false);
   s.unit = r.str("unit", "");
   s.scale = r.num("scale", 1.0);
   s.scaled_unit = r.str("scaled_unit", "");
@@ -167,6 +169,8 @@ SignalDef read_signal(const TableReader& r) {
     if (s.column.empty())
       throw InputError(r.file(), s.line, "signal '" + s.name + "': give 'column' (a CSV column) or 'combine' and 'of'");
     if (!s.of.empty()) throw InputError(r.file(), r.line_of("of"), "signal '" + s.name + "': 'of' needs 'combine'");
+  } else if (s.sum_columns) {
+    throw InputError(r.file(), r.line_of("sum_columns"), "signal '" + s.name + "': sum_columns sums CSV columns; it takes no 'combine'");
   } else {
     if (s.combine != "difference" && s.combine != "sum" && s.combine != "resultant")
       throw InputError(r.file(), r.line_of("combine"),

@@ -152,9 +152,15 @@ private:
         t = &table(f);
       }
       searched.push_back(t);
+      if (s.sum_columns) {
+        for (std::size_t c = 0; c < t->names.size(); ++c)
+          if (c != t->time_column && wildcard_match(s.column, t->names[c])) hits.emplace_back(t, static_cast<long>(c));
+        continue;
+      }
       const long c = find_column(*t, s.column);
       if (c >= 0 && static_cast<std::size_t>(c) != t->time_column) hits.emplace_back(t, c);
     }
+    if (s.sum_columns) return sum_of_columns(s, hits, searched, skipped);
     if (hits.empty()) {
       std::string avail;
       for (const TimeHistoryTable* t : searched) avail += "\n " + t->path + ":" + list_columns(*t);
@@ -170,16 +176,51 @@ private:
     }
     const TimeHistoryTable& t = *hits[0].first;
     const auto c = static_cast<std::size_t>(hits[0].second);
-    std::string unit = t.units[c];
+    return to_raw(s, t, t.columns[c], t.headers[c], t.units[c]);
+  }
+
+  // A signal that sums every column whose name matches the pattern `column` ('*' and '?'
+  // wildcards; sum_columns = true), e.g. the deleted elements of every rib part. The columns
+  // must share one file (one time base) and one unit.
+  RawSignal sum_of_columns(const SignalDef& s, const std::vector<std::pair<const TimeHistoryTable*, long>>& hits,
+                           const std::vector<const TimeHistoryTable*>& searched, const std::string& skipped) {
+    if (hits.empty()) {
+      std::string avail;
+      for (const TimeHistoryTable* t : searched) avail += "\n " + t->path + ":" + list_columns(*t);
+      avail += skipped;
+      throw InputError(cd_.path, s.line, "signal '" + s.name + "': no column name matches '" + s.column + "'; available columns:" + avail);
+    }
+    const TimeHistoryTable& t = *hits[0].first;
+    std::vector<double> sum(t.n_rows(), 0.0);
+    std::string matched;
+    for (const auto& [tt, c] : hits) {
+      const auto cc = static_cast<std::size_t>(c);
+      if (tt != &t)
+        throw InputError(cd_.path, s.line, "signal '" + s.name + "': columns matching '" + s.column + "' are in " + t.path +
+                                               " and " + tt->path + "; give 'file'");
+      if (tt->units[cc] != t.units[static_cast<std::size_t>(hits[0].second)])
+        throw InputError(cd_.path, s.line, "signal '" + s.name + "': columns matching '" + s.column + "' have different units ('" +
+                                               t.headers[static_cast<std::size_t>(hits[0].second)] + "', '" + tt->headers[cc] + "')");
+      for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += tt->columns[cc][i];
+    }
+    const auto c0 = static_cast<std::size_t>(hits[0].second);
+    const std::string header = "sum of " + std::to_string(hits.size()) + " columns matching '" + s.column + "'";
+    return to_raw(s, t, sum, header, t.units[c0]);
+  }
+
+  // Unit checks, scaling, time base, optional CFC filter of one column's values.
+  RawSignal to_raw(const SignalDef& s, const TimeHistoryTable& t, const std::vector<double>& values, const std::string& header,
+                   const std::string& column_unit) {
+    std::string unit = column_unit;
     if (unit.empty()) unit = s.unit;
     if (unit.empty())
-      throw InputError(cd_.path, s.line, "signal '" + s.name + "': column '" + t.headers[c] + "' in " + t.path +
+      throw InputError(cd_.path, s.line, "signal '" + s.name + "': column '" + header + "' in " + t.path +
                                              " has no [unit] in its header; give unit = \"...\" in the case");
-    if (!s.unit.empty() && !t.units[c].empty() && s.unit != t.units[c])
+    if (!s.unit.empty() && !column_unit.empty() && s.unit != column_unit)
       throw InputError(cd_.path, s.line, "signal '" + s.name + "': case says unit '" + s.unit + "' but " + t.path +
-                                             " header says '" + t.headers[c] + "'");
+                                             " header says '" + header + "'");
     if (!is_known_unit(unit))
-      throw InputError(cd_.path, s.line, "signal '" + s.name + "': unit '" + unit + "' of column '" + t.headers[c] +
+      throw InputError(cd_.path, s.line, "signal '" + s.name + "': unit '" + unit + "' of column '" + header +
                                              "' is not known (see docs/corridors.md for the unit list)");
     std::string tunit = t.units[t.time_column].empty() ? cd_.time_unit : t.units[t.time_column];
     if (!is_known_unit(tunit) || unit_dimension(tunit) != "time")
@@ -194,7 +235,7 @@ private:
     r.y.resize(t.n_rows());
     for (std::size_t i = 0; i < t.n_rows(); ++i) {
       r.t_ms[i] = t.columns[t.time_column][i] * tf;
-      r.y[i] = t.columns[c][i] * yf;
+      r.y[i] = values[i] * yf;
     }
     // drop repeated time stamps (keep the last value), then make the sampling uniform
     RawSignal u;
@@ -225,7 +266,7 @@ private:
       }
     }
     units_[s.name] = final_unit;
-    sources_[s.name] = fs::path(t.path).filename().string() + ": " + t.headers[c];
+    sources_[s.name] = fs::path(t.path).filename().string() + ": " + header;
     return u;
   }
 

@@ -22,6 +22,8 @@
 //                 --axis Y writes DY/VY/AY for the lateral and oblique cases)
 //   nodes.csv     time, node 3208 T8 DX, node 1201 sternum DX
 //   global.csv    time, kinetic, internal, damping energy, energy error
+//   parts.csv     time, deleted elements of the twelve rib parts (/TH/PART ER, as the
+//                 load-case decks write them): 0, the closed-form thorax does not break
 // With --corridor-out it also writes a corridor CSV built from the model's own closed-form
 // force-deflection curve (mean, and bounds at +/- 20 % of the peak force), used by the
 // end-to-end test: a run rated against its own curve must score close to 1.
@@ -81,11 +83,14 @@ int main(int argc, char** argv) {
   }
   fs::create_directories(out_dir);
   std::ofstream imp(fs::path(out_dir) / "impactor.csv"), nod(fs::path(out_dir) / "nodes.csv"),
-      glo(fs::path(out_dir) / "global.csv");
+      glo(fs::path(out_dir) / "global.csv"), prt(fs::path(out_dir) / "parts.csv");
   imp << "time [ms],rbody 900 impactor D" << axis << " [mm],rbody 900 impactor V" << axis << " [mm/ms],rbody 900 impactor A"
       << axis << " [mm/ms^2],contact 5 impactor-thorax F" << axis << " [kN]\n";
   nod << "time [ms],node 3208 T8 D" << axis << " [mm],node 1201 sternum D" << axis << " [mm]\n";
   glo << "time [ms],kinetic energy [J],internal energy [J],damping energy [J],energy error [-]\n";
+  prt << "time [ms]";
+  for (int r = 1; r <= 12; ++r) prt << ",part " << 34 + r << " rib_" << (r < 10 ? "0" : "") << r << " ER [-]";
+  prt << "\n";
   const double mt = hm.m + hm.big_m, vc = hm.m * hm.v0 / mt;
   bool separated = false;
   double ts = 0.0, xs = 0.0, vs = 0.0, e_damp = 0.0, v_prev = hm.v0;
@@ -136,8 +141,12 @@ int main(int argc, char** argv) {
     nod << line;
     std::snprintf(line, sizeof line, "%.5f,%.9g,%.9g,%.9g,%.6g\n", t_ms, ke, ie, e_damp, separated ? 0.0 : err);
     glo << line;
+    std::snprintf(line, sizeof line, "%.5f", t_ms);
+    prt << line;
+    for (int r = 0; r < 12; ++r) prt << ",0";
+    prt << '\n';
   }
-  if (!imp || !nod || !glo) {
+  if (!imp || !nod || !glo || !prt) {
     std::cerr << "hbm-corridors-synthetic-hub: error: cannot write to " << out_dir << "\n";
     return 1;
   }

@@ -19,6 +19,7 @@
 #include "hbm/corridors/case_definition.hpp"
 #include "hbm/corridors/corridor.hpp"
 #include "hbm/corridors/evaluation.hpp"
+#include "hbm/corridors/input_error.hpp"
 #include "hbm/corridors/units.hpp"
 
 namespace fs = std::filesystem;
@@ -131,5 +132,65 @@ TEST(Evaluation, CriteriaAndTimeRatingThroughThePipeline) {
   EXPECT_EQ(pr.iso.shift, 0);
   EXPECT_DOUBLE_EQ(pr.inside_fraction, 1.0);
   EXPECT_NEAR(pr.model_peak, 6.5, 1e-6);  // mid-line of the 5..8 kN plateau
+  fs::remove_all(dir);
+}
+
+// sum_columns: a signal that adds every column whose name matches a pattern, as the thorax
+// cases count the deleted elements of all twelve rib parts ("part N rib_NN ER"). Three rib
+// parts deleting 1, 2 and 4 elements at 10, 20 and 30 ms give the count 7 from 30 ms on;
+// a part that is not a rib (its 5 deletions) and a rib's internal energy are left out. No
+// match, or sum_columns beside combine, is an error naming the case line.
+TEST(Evaluation, SumColumnsAddsEveryMatchingColumn) {
+  const fs::path dir = fs::temp_directory_path() / ("hbm_corridors_sum_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "run");
+  {
+    std::ofstream th(dir / "run" / "parts.csv");
+    th << "time [ms],part 35 rib_01 ER [-],part 35 rib_01 IE [J],part 37 rib_02 ER [-],part 41 rib_06 ER [-],"
+          "part 2 skin_thorax ER [-]\n";
+    for (int i = 0; i <= 400; ++i) {
+      const double t = i * 0.1;
+      th << t << ',' << (t >= 10 ? 1 : 0) << ',' << t << ',' << (t >= 20 ? 2 : 0) << ',' << (t >= 30 ? 4 : 0) << ','
+         << (t >= 5 ? 5 : 0) << '\n';
+    }
+  }
+  const std::string head = "[case]\nname = \"sum\"\n\n[processing]\nrate_hz = 10000\n\n[time_zero]\nmethod = \"given\"\ntime_ms = 0\n\n";
+  std::ofstream(dir / "case.toml") << head
+                                   << "[[signal]]\nname = \"ribs\"\ncolumn = \"*rib_?? ER\"\nsum_columns = true\n\n"
+                                      "[[criterion]]\nkind = \"failed_elements\"\nname = \"failed rib elements\"\n"
+                                      "signals = [\"ribs\"]\nlimit = 7\n";
+  const auto r = evaluate_case(load_case(dir / "case.toml"), dir / "run");
+  const auto& s = r.signal("ribs");
+  ASSERT_EQ(s.y.size(), r.time_ms.size());
+  for (std::size_t i = 0; i < s.y.size(); i += 500) {
+    const double t = r.time_ms[i];
+    const double expect = (t >= 10 ? 1 : 0) + (t >= 20 ? 2 : 0) + (t >= 30 ? 4 : 0);
+    if (std::abs(t - 10) > 0.2 && std::abs(t - 20) > 0.2 && std::abs(t - 30) > 0.2) {
+      EXPECT_DOUBLE_EQ(s.y[i], expect) << t;
+    }
+  }
+  ASSERT_EQ(r.criteria.size(), 1u);
+  EXPECT_DOUBLE_EQ(r.criteria[0].value, 7.0);
+  EXPECT_NE(s.source.find("sum of 3 columns"), std::string::npos) << s.source;
+
+  std::ofstream(dir / "nomatch.toml") << head << "[[signal]]\nname = \"ribs\"\ncolumn = \"*costal ER\"\nsum_columns = true\n"
+                                                  "[[criterion]]\nkind = \"failed_elements\"\nsignals = [\"ribs\"]\n";
+  try {
+    (void)evaluate_case(load_case(dir / "nomatch.toml"), dir / "run");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nomatch.toml:11: error: signal 'ribs': no column name matches"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / "both.toml") << head
+                                   << "[[signal]]\nname = \"a\"\ncolumn = \"rib_01 ER\"\n[[signal]]\nname = \"b\"\ncolumn = \"rib_02 ER\"\n"
+                                      "[[signal]]\nname = \"ribs\"\ncombine = \"sum\"\nof = [\"a\", \"b\"]\nsum_columns = true\n";
+  try {
+    (void)load_case(dir / "both.toml");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("both.toml:21: error: signal 'ribs': sum_columns sums CSV columns"), std::string::npos)
+        << e.what();
+  }
   fs::remove_all(dir);
 }

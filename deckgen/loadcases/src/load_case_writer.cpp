@@ -344,11 +344,13 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   add_th(d, "/TH/RBODY", obj + 2, "impactor rigid body", {"FX", "FY", "FZ", "VX", "VY", "VZ"}, {obj + 1});
   add_th(d, "/TH/INTER", obj + 3, "impactor contact", {"FN", "FT", "ECONT"}, {obj + 1});
   {
-    // Internal and hourglass energy and added mass of every part: where energy and mass go.
+    // Internal and hourglass energy, added mass and deleted elements of every part: where
+    // energy and mass go, and the failed rib elements of the rib fracture model
+    // (hbm-deckgen --rib-fracture; the corridor cases count them).
     std::vector<std::int64_t> parts;
     for (const auto& [pid, title] : model.part_titles) parts.push_back(pid);
     parts.push_back(part);
-    add_th(d, "/TH/PART", obj + 4, "parts", {"IE", "HE", "AM"}, parts);
+    add_th(d, "/TH/PART", obj + 4, "parts", {"IE", "HE", "AM", "ER"}, parts);
   }
 
   // Texts.
@@ -377,7 +379,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
        << "# Subject free (no seat, no back support, no gravity: the event lasts " << fmt(spec.tstop_ms, 0) << " ms).\n"
        << "# Time histories: /TH/NODE/" << obj + 1 << " (impactor main node, " << spec.spine_level << " node "
        << g.spine_node << ", sternum node " << g.sternum_node << "), /TH/RBODY/" << obj + 2 << ", /TH/INTER/" << obj + 3
-       << ", /TH/PART/" << obj + 4 << " (IE HE AM of every part).\n# Run:  hbm-solver " << spec.name << "_0000.rad --out RUN_DIR\n"
+       << ", /TH/PART/" << obj + 4 << " (IE HE AM ER of every part).\n# Run:  hbm-solver " << spec.name << "_0000.rad --out RUN_DIR\n"
        << "# Rate: hbm-corridors --case " << spec.corridor_case << " --th RUN_DIR --out REPORT_DIR\n";
 
   // Write into a temporary sibling folder, check, then rename.

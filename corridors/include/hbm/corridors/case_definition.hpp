@@ -19,7 +19,8 @@ struct SignalDef {
   std::string name;
   long line = 0;
   std::string file;         ///< CSV file in the run folder ('*' wildcards); "" = search all
-  std::string column;       ///< exact header, name, or unique substring
+  std::string column;       ///< exact header, name, or unique substring (sum_columns: a '*'/'?' pattern)
+  bool sum_columns = false; ///< sum every column whose name matches the pattern `column`
   std::string unit;         ///< unit of the column when its header has none
   double scale = 1.0;       ///< multiplier (sign flip, mass for force = m a, ...)
   std::string scaled_unit;  ///< unit after scaling, when the scale changes the dimension
