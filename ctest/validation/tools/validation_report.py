@@ -193,6 +193,7 @@ def main():
     os.makedirs(a.images, exist_ok=True)
 
     runs, ratings, notes = [], [], []
+    failed_ribs = {}  # case -> failed rib elements (corridor criterion)
     for c in cases:
         run_dir = os.path.join(a.work, "runs", c)
         kv = read_kv(os.path.join(a.work, "runs", f"{c}.run.txt"))
@@ -225,6 +226,9 @@ def main():
                          f"see {os.path.join(a.work, 'reports', c + '.log')})")
             continue
         s = json.load(open(sj))
+        for cr in s.get("criteria", []):
+            if cr.get("quantity") == "failed elements: rib_failed_elements":
+                failed_ribs[c] = cr.get("value")
         for rt in s.get("ratings", []):
             iso, cora = rt.get("iso18571", {}), rt.get("cora", {})
             img = None
@@ -306,17 +310,20 @@ def main():
     L.append("## Runs")
     L.append("")
     L.append("| case | termination | simulated of end time [ms] | cycles | wall [s] | threads | energy error max [%] | "
-             "added mass end [%] | hourglass / internal end [%] | hourglass / internal max [%] |")
-    L.append("|---|---|---|---|---|---|---|---|---|---|")
+             "added mass end [%] | hourglass / internal end [%] | hourglass / internal max [%] | failed rib elements |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in runs:
         term = r["terminated"] + (f" (exit {r['exit']}: {r['reason']})" if r["terminated"] != "normal" else "")
         L.append(f"| {r['case']} | {term} | {fmt(r.get('t_end'))} of {fmt(r.get('tstop'), 0)} | {r['cycles'] if r['cycles'] is not None else '-'} | "
                  f"{fmt(r['wall'], 1)} | {r['threads']} | {fmt(r.get('energy_err'))} | {fmt(r.get('added'), 3)} | "
-                 f"{fmt(r.get('hg_end'), 1)} | {fmt(r.get('hg_max'), 1)} |")
+                 f"{fmt(r.get('hg_end'), 1)} | {fmt(r.get('hg_max'), 1)} | "
+                 f"{fmt(failed_ribs.get(r['case']), 0)} |")
     L.append("")
     L.append("Energy error = (E_kin + E_int + E_hg + E_contact) / (E_0 + W_ext) - 1 as the solver writes it; "
              "added mass = (M - M0) / M0 from nodal mass scaling at the fixed 1.5 us step; hourglass / internal "
-             "max is taken over the times when the internal energy exceeds 10 % of its peak.")
+             "max is taken over the times when the internal energy exceeds 10 % of its peak. Failed rib elements: "
+             "deleted rib elements (the corridor case's failed_elements criterion; 0 with elastic ribs, counted by the "
+             "rib fracture model, `hbm-deckgen --rib-fracture AGE`; the seed model read 7 as a fracture risk).")
     L.append("")
     per_case_parts_table(
         L, runs, "Where the hourglass energy sits at the end of each run (the three parts with the most; "
