@@ -426,7 +426,7 @@ def write_deck(folder, spec, speed):
               f"{1:10d}{2:10d}",
               "/TH/NODE/2", "pot main nodes", "".join(f"{c:>10}" for c in ("DX", "DY", "DZ")),
               f"{POSTERIOR_MAIN:10d}{0:10d}posterior", f"{ANTERIOR_MAIN:10d}{0:10d}anterior",
-              "/TH/PART/3", spec.part_title, "".join(f"{c:>10}" for c in ("IE", "KE", "HE")), f"{1:10d}",
+              "/TH/PART/3", spec.part_title, "".join(f"{c:>10}" for c in ("IE", "KE", "HE", "ER")), f"{1:10d}",
               "/END"]
     return write_deck_pair(folder, spec.name, lines, schedule, speed, 2000)
 
@@ -439,6 +439,17 @@ class RunResult:
     termination: str
     max_energy_error: float  # largest |energy error| over the run, fraction
     wall_s: float
+    deleted: list = None     # deleted rib elements at each sample (/TH/PART ER)
+
+    def first_fracture(self):
+        """(displacement mm, force N just before) at the first element deletion, or None: the
+        rib fracture model (hbm-deckgen --rib-fracture) deletes a rib element where it breaks."""
+        if not self.deleted:
+            return None
+        for i, n in enumerate(self.deleted):
+            if n > 0:
+                return self.displacement[i], max(self.force[:i + 1])
+        return None
 
 
 UNIT_FACTORS = {("kN", "N"): 1e3, ("N", "N"): 1.0, ("mm", "mm"): 1.0, ("m", "mm"): 1e3,
@@ -525,7 +536,12 @@ def run_solver(solver, starter, spec):
     anterior = channel(nodes, node_csv, f"node {ANTERIOR_MAIN} anterior DX", "mm")
     posterior = channel(nodes, node_csv, f"node {POSTERIOR_MAIN} posterior DX", "mm")
     shortening = [xa - xp for xa, xp in zip(anterior, posterior)]
-    return RunResult(shortening, force, termination, max(abs(e) for e in error), wall)
+    part_csv = os.path.join(out, f"{spec.name}_TH_PART_3.csv")
+    parts = read_time_history(part_csv)
+    if channel(parts, part_csv, "time", "ms") != t_force:
+        raise InputError(f"{part_csv}: its times differ from those of {rbody_csv}")
+    deleted = channel(parts, part_csv, f"part 1 {spec.part_title} ER", "-")
+    return RunResult(shortening, force, termination, max(abs(e) for e in error), wall, deleted)
 
 
 # ---------------------------------------------------------------- curve arithmetic
@@ -669,6 +685,16 @@ def print_rib_table(c):
     km, kk = c.stiffness()
     print(f"  initial stiffness (fit {STIFFNESS_FIT_MM[0]:g}-{STIFFNESS_FIT_MM[1]:g} mm): model {fmt(km, '.2f')} "
           f"N/mm, Kindig {fmt(kk, '.2f')} N/mm, ratio {fmt(ratio(km, kk), '.2f')}")
+    print(f"  {fracture_text(c)}")
+
+
+def fracture_text(c):
+    """The model's first element deletion against the end of Kindig's average curve (the
+    tests' mean displacement and force at fracture, where the average stops)."""
+    end_d, end_f = c.kindig.average[-1]
+    f = c.run.first_fracture()
+    model = f"model breaks at d {f[0]:.1f} mm, peak {f[1]:.1f} N" if f else "model does not break (elastic ribs, or not within the stroke)"
+    return f"fracture: {model}; Kindig average ends at d {end_d:.1f} mm, {end_f:.1f} N"
 
 
 def mean(values):
@@ -766,6 +792,9 @@ def write_report(path, args, comparisons, ring_check):
             lines.append(f"| {c.level} | {c.spec.chord_mm:.1f} | {len(c.spec.triangles)} | {fmt(km, '.2f')} | "
                          f"{fmt(kk, '.2f')} | {fmt(ratio(km, kk), '.2f')} | {c.run.termination} | "
                          f"{100 * c.run.max_energy_error:.2f} % |")
+        lines += ["", "Fracture (the rib fracture model, `hbm-deckgen --rib-fracture AGE`, deletes a rib element where "
+                  "it breaks; Kindig's average curve ends at the tests' mean fracture):", ""]
+        lines += [f"- rib {c.level}: {fracture_text(c)}" for c in comparisons]
         lines.append("")
     if ring_check:
         lines += ["## Method check: half ring", "", describe_ring(ring_check) + ".", ""]
