@@ -192,7 +192,6 @@ private:
     }
     const TimeHistoryTable& t = *hits[0].first;
     std::vector<double> sum(t.n_rows(), 0.0);
-    std::string matched;
     for (const auto& [tt, c] : hits) {
       const auto cc = static_cast<std::size_t>(c);
       if (tt != &t)

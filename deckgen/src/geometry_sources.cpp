@@ -352,7 +352,6 @@ RibBoneFailure read_rib_fracture(const std::filesystem::path& file, double E) {
   b.log_median_age_slope = get("ultimate_strain_log_median_age_slope", -1, 1);
   b.age_min = get("age_min", 0, 120);
   b.age_max = get("age_max", 0, 120);
-  b.line_age = q["age_min"].second;
   if (b.age_max <= b.age_min) throw SourceError(file, q["age_max"].second, "value", "age_max must exceed age_min");
   // The failure strain must lie beyond yield over the whole age range.
   for (double age : {b.age_min, b.age_max})

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 namespace dg = hbm::deckgen;
 
@@ -67,10 +68,12 @@ int main(int argc, char** argv) {
     o.flesh_tetra = !flesh_bricks;
     if (app.count("--rib-fracture")) {
       const auto& b = g.rib_bone;
-      if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max))
-        throw std::invalid_argument("--rib-fracture " + std::to_string(rib_fracture_age) + ": the failure strain fit of " +
-                                    (g.dir / "rib_fracture.csv").string() + " covers ages " + std::to_string(b.age_min) + " to " +
-                                    std::to_string(b.age_max) + " years");
+      if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max)) {
+        std::ostringstream msg;
+        msg << "--rib-fracture " << rib_fracture_age << ": the failure strain fit of " << (g.dir / "rib_fracture.csv").string()
+            << " covers ages " << b.age_min << " to " << b.age_max << " years";
+        throw std::invalid_argument(msg.str());
+      }
       o.rib_fracture_age = rib_fracture_age;
     }
     dg::ModelLandmarks lm;

@@ -30,7 +30,6 @@ struct RibBoneFailure {
   double plastic_modulus = 0;   // d sigma / d eps_p [MPa]
   double log_median_intercept = 0, log_median_age_slope = 0;  // median eps_u = exp(b + c age)
   double age_min = 0, age_max = 0;                            // donor ages the fit covers [y]
-  int line_age = 0;             // line of age_min in the source (for messages)
 
   double yield_strain() const { return yield_stress / E; }
   // Median ultimate (failure) strain of rib cortical bone at `age` years (Larsson 2021).
