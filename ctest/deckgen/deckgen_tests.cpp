@@ -385,7 +385,7 @@ TEST(FeModelNodes, UnreferencedNodesAreDroppedAndEveryReferenceRenumbered) {
 TEST(Mechanics, EquivalentRibStripKeepsBendingAndAxialStiffness) {
   // Hollow ellipse 13 x 6 mm, cortex 1 mm, strip height 20 mm.
   double h = 13, w = 6, t = 1, band = 20;
-  double teq = equivalent_rib_thickness(h, w, t, band);
+  double teq = equivalent_rib_thickness(h, w, t);
   double A = hollow_ellipse_area(h, w, t), I = hollow_ellipse_inertia(h, w, t);
   double scale = A / (band * teq);  // E_eq / E
   EXPECT_NEAR(scale * band * teq, A, 1e-9 * A);

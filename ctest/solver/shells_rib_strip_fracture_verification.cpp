@@ -16,7 +16,7 @@
 //  - the first element deletion (P_thick_fail 0.5: both outer points) at kappa_u (3 %).
 #include "shells_harness.hpp"
 
-// The strip formulas under test (plain arithmetic, shared with deckgen).
+// The strip section and plasticity formulas under test (plain arithmetic, shared with deckgen).
 #include "../../deckgen/include/hbm/deckgen/rib_fracture.hpp"
 
 #include <gtest/gtest.h>
@@ -41,10 +41,8 @@ struct BendingResult {
 BendingResult bend_rib_strip_to_fracture() {
   // Rib 5, mid-rib (geometry/rib_cage.csv): height 13, width 6, cortex 1.0 mm.
   const double h = 13, w = 6, tc = 1.0;
-  const double a = w / 2, bb = h / 2;
-  const double A = std::numbers::pi * (a * bb - (a - tc) * (bb - tc));
-  const double I = std::numbers::pi / 4 * (bb * a * a * a - (bb - tc) * std::pow(a - tc, 3));
-  const double t_eq = std::sqrt(12 * I / A);
+  const double A = hbm::deckgen::hollow_ellipse_area(h, w, tc), I = hbm::deckgen::hollow_ellipse_inertia(h, w, tc);
+  const double t_eq = hbm::deckgen::equivalent_rib_thickness(h, w, tc);
   const double band = 20.0;              // strip width (the rib's band height in the model)
   const double s = A / (band * t_eq);    // modulus and density scale
   // Bone (geometry/rib_fracture.csv, E from materials.csv rib_cortical), GPa.

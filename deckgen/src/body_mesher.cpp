@@ -22,23 +22,6 @@
 
 namespace hbm::deckgen {
 
-double hollow_ellipse_area(double height, double width, double t) {
-  double a = width / 2, b = height / 2;
-  return M_PI * (a * b - (a - t) * (b - t));
-}
-
-double hollow_ellipse_inertia(double height, double width, double t) {
-  double a = width / 2, b = height / 2;
-  return M_PI / 4 * (b * a * a * a - (b - t) * std::pow(a - t, 3));
-}
-
-double equivalent_rib_thickness(double height, double width, double cortical, double band_height) {
-  (void)band_height;
-  // Strip of thickness t and modulus E_eq with E_eq h t = E A and E_eq h t^3 / 12 = E I:
-  // t = sqrt(12 I / A), independent of the strip height h.
-  return std::sqrt(12 * hollow_ellipse_inertia(height, width, cortical) / hollow_ellipse_area(height, width, cortical));
-}
-
 EquivalentPlate sandwich_plate(double total, double cortical) {
   const double T = total, tc = std::min(cortical, total / 2);  // tc = T / 2: a solid plate
   const double Iw = (T * T * T - std::pow(T - 2 * tc, 3)) / 12, Aw = 2 * tc;
@@ -613,7 +596,7 @@ void Builder::build_ribcage() {
         bool left = side == 0;
         int jj = left ? j : N - 1 - j;
         auto [bh, len] = band(l, jj);
-        double teq = equivalent_rib_thickness(h, w, t, bh);
+        double teq = equivalent_rib_thickness(h, w, t);
         fibre_ratio_sum += teq / w;
         ++cells;
         real_mass_area += hollow_ellipse_area(h, w, t) * len;

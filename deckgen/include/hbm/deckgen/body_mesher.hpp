@@ -9,6 +9,7 @@
 
 #include "hbm/deckgen/fe_model.hpp"
 #include "hbm/deckgen/geometry_sources.hpp"
+#include "hbm/deckgen/rib_strip.hpp"  // the equivalent rib strip the rib cage is made of
 
 #include <map>
 #include <string>
@@ -46,13 +47,6 @@ struct ModelLandmarks {
 
 FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks = nullptr);
 
-// Equivalent strip of a hollow elliptic rib section (semi-axes a = width/2 across the strip,
-// b = height/2 along it, cortex t): I = pi/4 (b a^3 - (b-t)(a-t)^3), A = pi (ab - (a-t)(b-t)).
-// A strip of thickness t_eq = sqrt(12 I / A) and modulus/density scaled by A / (h t_eq) has
-// the rib's axial stiffness, bending stiffness (about the height axis) and mass.
-double equivalent_rib_thickness(double height, double width, double cortical, double band_height);
-double hollow_ellipse_area(double height, double width, double cortical);
-double hollow_ellipse_inertia(double height, double width, double cortical);
 
 // Sandwich plate (two cortices tc on a core, total thickness T) as one shell: per unit width
 // I = (T^3 - (T - 2 tc)^3) / 12 and A = 2 tc of the cortices; a shell of thickness

@@ -4,7 +4,7 @@
 //
 // A rib strip is a shell of thickness t_eq = sqrt(12 I / A) with its modulus scaled by
 // s = A / (h t_eq), so that it has the real hollow section's E A, E I and mass
-// (equivalent_rib_thickness). At a curvature kappa the real section's outer fibre, at w / 2
+// (rib_strip.hpp). At a curvature kappa the real section's outer fibre, at w / 2
 // of its width w, is strained kappa w / 2; the strip's outer through-thickness Gauss point,
 // at zeta t_eq / 2, is strained kappa zeta t_eq / 2, i.e. k = zeta t_eq / w times as much.
 // Giving the strip the bone's yield strain and failure strain times k makes it yield and
@@ -18,6 +18,8 @@
 // This header is plain arithmetic (no Eigen) so that the solver's shell verification can
 // check the strip in the solver's own through-thickness integration.
 #pragma once
+
+#include "rib_strip.hpp"  // same folder: also found by the solver test, which has no deckgen include path
 
 #include <cmath>
 
