@@ -21,10 +21,7 @@ namespace {
 
 using test_support::data_dir;
 using test_support::error_of;
-
-fs::path temp_file(const std::string& name, const std::string& text) {
-  return test_support::temp_file("hbm_corridors_io", name, text);
-}
+using test_support::temp_file;
 
 }  // namespace
 
@@ -81,7 +78,7 @@ TEST(CaseDefinition, ShippedCasesLoad) {
 TEST(CaseDefinition, ErrorsPointAtTheLine) {
   const std::string head =
       "[case]\nname = \"t\"\n\n[[signal]]\nname = \"f\"\ncolumn = \"impactor AX\"\n";  // lines 1-6
-  test_support::expect_case_errors("hbm_corridors_io", head, {
+  test_support::expect_case_errors(head, {
       {"cfc = 123\n", 7, "not an SAE J211 channel class"},
       {"colour = 1\n", 7, "unknown key 'colour'"},
       {"unit = \"furlong\"\n", 7, "unknown unit"},

@@ -21,10 +21,7 @@ namespace {
 
 using test_support::data_dir;
 using test_support::error_of;
-
-fs::path temp_file(const std::string& name, const std::string& text) {
-  return test_support::temp_file("hbm_corridors_tests", name, text);
-}
+using test_support::temp_file;
 
 Polyline line(std::vector<double> x, double slope, double offset) {
   Polyline p;
@@ -122,7 +119,7 @@ TEST(TestCurves, CaseFileKeysGoTogether) {
       "[case]\nname = \"t\"\n\n[[signal]]\nname = \"f\"\ncolumn = \"impactor AX\"\n\n"
       "[[rating]]\nname = \"r\"\nkind = \"time\"\nsignal = \"f\"\n[rating.corridor]\n"
       "file = \"corr.csv\"\nx_column = \"x\"\ny_column = \"y\"\nx_unit = \"ms\"\ny_unit = \"kN\"\n";  // lines 1-17
-  test_support::expect_case_errors("hbm_corridors_tests", head, {
+  test_support::expect_case_errors(head, {
       {"tests_file = \"t.csv\"\n", 18, "go together"},
       {"tests = [[\"A_t\", \"A_f\"]]\n", 18, "go together"},
       {"mean = \"mean\"\ntests_file = \"t.csv\"\ntests = [[\"A_t\", \"A_f\"]]\n", 19, "not both"},

@@ -19,9 +19,10 @@
 
 namespace hbm::corridors::test_support {
 
-/// Writes `text` to <tmp>/<folder>_<pid>/<name> and returns the path.
-inline std::filesystem::path temp_file(const std::string& folder, const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / (folder + "_" + std::to_string(::getpid()));
+/// Writes `text` to <tmp>/hbm_corridors_<pid>/<name> (one folder per test process) and
+/// returns the path.
+inline std::filesystem::path temp_file(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hbm_corridors_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::filesystem::path p = dir / name;
   std::ofstream(p) << text;
@@ -48,10 +49,10 @@ struct BadCase {
   std::string words;
 };
 
-/// Loads head + tail of each as <folder>/bad.toml and expects "bad.toml:LINE:" and the words.
-inline void expect_case_errors(const std::string& folder, const std::string& head, const std::vector<BadCase>& bad) {
+/// Loads head + tail of each as bad.toml and expects "bad.toml:LINE:" and the words.
+inline void expect_case_errors(const std::string& head, const std::vector<BadCase>& bad) {
   for (const auto& b : bad) {
-    const auto p = temp_file(folder, "bad.toml", head + b.tail);
+    const auto p = temp_file("bad.toml", head + b.tail);
     const std::string msg = error_of([&] { load_case(p); });
     SCOPED_TRACE(msg);
     EXPECT_NE(msg.find("bad.toml:" + std::to_string(b.line) + ":"), std::string::npos);
