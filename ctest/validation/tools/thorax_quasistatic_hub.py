@@ -46,8 +46,6 @@ from isolated_rib_bending import (ArgumentParser, DriveSchedule, InputError, cha
 
 TOOL = "ctest/validation/tools/thorax_quasistatic_hub.py"
 CASE = "hub_frontal_4p3"
-DRIVE_ID = 39001             # /FUNCT, /IMPVEL, /GRNOD ids of the drive and the back support
-BACK_ID = 39002
 BACK_OFFSET_MM = 25.0        # back support: skin nodes more than this behind the T8 node
 BACK_PARTS = ("skin_thorax", "skin_thorax_tria")
 CAVANAUGH_STROKE_MM = 25.4
@@ -90,6 +88,26 @@ def landmark_nodes(path, cards):
                 return found
     raise InputError(f"{path}: no /TH/NODE card with the nodes 'impactor', 'T8' and 'sternum' "
                      f"(is it an hbm-loadcase {CASE} deck?)")
+
+
+def time_history_ids(path, cards):
+    """Ids of the hub deck's /TH/NODE, /TH/INTER and /TH/PART cards and of the contact the
+    /TH/INTER card asks for (hbm-loadcase numbers them above the model's own ids)."""
+    ids = {}
+    for key, body in cards:
+        for kind in ("NODE", "INTER", "PART"):
+            if key and key.startswith(f"/TH/{kind}/") and kind not in ids:
+                try:
+                    ids[kind] = int(key.split("/")[3])
+                    if kind == "INTER":
+                        ids["contact"] = int(card_body(body)[2].split()[0])
+                except (IndexError, ValueError):
+                    raise InputError(f"{path}: {key}: expected an id and, for /TH/INTER, a third line "
+                                     f"naming the contact") from None
+    missing = [k for k in ("NODE", "INTER", "PART") if k not in ids]
+    if missing:
+        raise InputError(f"{path}: no /TH/{', /TH/'.join(missing)} card (is it an hbm-loadcase {CASE} deck?)")
+    return ids
 
 
 def rigid_body_nodes(model):
@@ -138,6 +156,7 @@ def quasi_static_starter(path, model, schedule, speed):
     with open(path) as f:
         cards = split_cards(f.read().splitlines())
     marks = landmark_nodes(path, cards)
+    th_ids = time_history_ids(path, cards)
     inivel = [(k, b) for k, b in cards if k and k.startswith("/INIVEL/TRA/")]
     if len(inivel) != 1:
         raise InputError(f"{path}: {len(inivel)} /INIVEL/TRA cards (the hub deck has one, on the impactor)")
@@ -161,15 +180,19 @@ def quasi_static_starter(path, model, schedule, speed):
             body = [body[0], "   " + "".join("0" if k == axis else "1" for k in range(3)) + " 111" + body[1][10:]]
         out += ([key] if key else []) + body
     direction = "XYZ"[axis]
-    out += schedule.funct_lines(DRIVE_ID)
-    out += [f"/GRNOD/NODE/{DRIVE_ID}", "driven hub main node", f"{marks['impactor']:10d}",
-            f"/IMPVEL/{DRIVE_ID}", "hub driven at constant speed",
-            f"{DRIVE_ID:10d}{direction:>10}{0:10d}{0:10d}{DRIVE_ID:10d}",
+    # ids of the drive and the back support: above every id of the deck (hbm-loadcase numbers
+    # its cards above the model's)
+    drive_id = 1 + max(int(k.rsplit("/", 1)[1]) for k, _ in cards if k and k.rsplit("/", 1)[1].isdigit())
+    back_id = drive_id + 1
+    out += schedule.funct_lines(drive_id)
+    out += [f"/GRNOD/NODE/{drive_id}", "driven hub main node", f"{marks['impactor']:10d}",
+            f"/IMPVEL/{drive_id}", "hub driven at constant speed",
+            f"{drive_id:10d}{direction:>10}{0:10d}{0:10d}{drive_id:10d}",
             f"{1.0:20.10E}{sign * speed:20.10E}{0.0:20.10E}{0.0:20.10E}",
-            f"/GRNOD/NODE/{BACK_ID}", "back support: thorax skin behind T8"] + rows_of_ids(back)
-    out += [f"/BCS/{BACK_ID}", "back support (subject supine on a rigid frame)",
-            f"   111 000{0:10d}{BACK_ID:10d}", "/END"]
-    return out, marks, len(back), axis, sign
+            f"/GRNOD/NODE/{back_id}", "back support: thorax skin behind T8"] + rows_of_ids(back)
+    out += [f"/BCS/{back_id}", "back support (subject supine on a rigid frame)",
+            f"   111 000{0:10d}{back_id:10d}", "/END"]
+    return out, marks, th_ids, len(back), axis, sign
 
 
 def engine_lines(path, schedule, speed):
@@ -190,7 +213,7 @@ def engine_lines(path, schedule, speed):
 
 def write_test(args):
     """hbm-loadcase writes the hub deck; it is rewritten into the quasi-static test.
-    Returns (starter path, landmarks, back node count, axis, sign, schedule)."""
+    Returns (starter path, landmarks, time-history ids, back node count, axis, sign)."""
     decks = os.path.join(args.work, "decks")
     try:
         r = subprocess.run([args.loadcase, "--model", args.model, "--geometry", args.geometry, "--case", CASE,
@@ -204,13 +227,13 @@ def write_test(args):
     model = read_model(args.model)
     # the hub starts 3 mm clear of the skin: the stroke counts from first contact
     schedule = DriveSchedule(args.stroke + 8.0, args.speed)
-    lines, marks, n_back, axis, sign = quasi_static_starter(starter, model, schedule, args.speed)
+    lines, marks, th_ids, n_back, axis, sign = quasi_static_starter(starter, model, schedule, args.speed)
     engine_text = engine_lines(engine, schedule, args.speed)
     with open(starter, "w") as f:
         f.write("\n".join(lines) + "\n")
     with open(engine, "w") as f:
         f.write("\n".join(engine_text) + "\n")
-    return starter, marks, n_back, axis, sign, schedule
+    return starter, marks, th_ids, n_back, axis, sign
 
 
 # ---------------------------------------------------------------- results
@@ -236,17 +259,16 @@ class Result:
         return None if f is None or s is None or s <= 0 else f / s
 
 
-def read_result(out, marks, axis, sign, stroke, wall_s):
+def read_result(out, marks, th_ids, axis, sign, stroke, wall_s):
     name = "XYZ"[axis]
-    node_csv = os.path.join(out, f"{CASE}_TH_NODE_31001.csv")
-    inter_csv = os.path.join(out, f"{CASE}_TH_INTER_31003.csv")
-    part_csv = os.path.join(out, f"{CASE}_TH_PART_31004.csv")
+    node_csv, inter_csv, part_csv = (os.path.join(out, f"{CASE}_TH_{kind}_{th_ids[kind]}.csv")
+                                     for kind in ("NODE", "INTER", "PART"))
     nodes, inter, parts = (read_time_history(p) for p in (node_csv, inter_csv, part_csv))
     time = channel(nodes, node_csv, "time", "ms")
     if channel(inter, inter_csv, "time", "ms") != time or channel(parts, part_csv, "time", "ms") != time:
         raise InputError(f"{node_csv}: its times differ from those of the other time histories")
     travel = {label: channel(nodes, node_csv, f"node {nid} {label} D{name}", "mm") for label, nid in marks.items()}
-    force = channel(inter, inter_csv, "inter 31001 impactor contact FN", "N")
+    force = channel(inter, inter_csv, f"inter {th_ids['contact']} impactor contact FN", "N")
     error = max(abs(e) for e in channel(nodes, node_csv, "energy error", "-"))
     first = next((i for i, f in enumerate(force) if f > CONTACT_FORCE_N), None)
     if first is None:
@@ -327,9 +349,9 @@ def parse_args(argv):
 
 
 def run(args):
-    starter, marks, n_back, axis, sign, schedule = write_test(args)
+    starter, marks, th_ids, n_back, axis, sign = write_test(args)
     out, _, wall = run_hbm_solver(args.solver, starter)
-    result = read_result(out, marks, axis, sign, args.stroke, wall)
+    result = read_result(out, marks, th_ids, axis, sign, args.stroke, wall)
     for line in summary_lines(result, args):
         print(line)
     if args.report:
