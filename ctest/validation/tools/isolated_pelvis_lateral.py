@@ -41,18 +41,18 @@ Run (from the repository root):
 both. A model far off Guillemot is reported, not failed. Exit 1 with a message naming the
 file (and line) on bad input, a solver failure or a failed plate check; 0 otherwise.
 """
-import argparse
 import os
 import shlex
 import sys
 from dataclasses import dataclass
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from isolated_rib_bending import (ArgumentParser, Card, InputError, centroid, channel,  # noqa: E402
+from isolated_rib_bending import (Card, InputError, centroid, channel,  # noqa: E402
                                   file_digest, fitted_slope, fmt, ids_in_rows_of_10, in_repo,
                                   interpolate, mean, node_line, ratio, read_model, read_time_history,
                                   run_hbm_solver, DriveSchedule, starter_head, write_deck_pair,
-                                  positive_number, run_analytic_check, tool_main,
+                                  positive_number, run_analytic_check, tool_argument_parser, tool_main,
+                                  write_report_lines,
                                   FIXED_STEP_MS, RAMP_STROKE_MM)
 
 TOOL = "ctest/validation/tools/isolated_pelvis_lateral.py"
@@ -517,14 +517,12 @@ def write_report(path, args, comparison, plate_checks):
                   if s.startswith(("# SOURCE CATALOGUE", "# LOAD CASE", "# TEST SETUP"))]
         lines += [f"- {s}" for s in source]
         lines.append(f"- Files: `{in_repo(args.guillemot)}/static.csv` (specimens, daN) and `dynamic.csv` (N).")
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    write_report_lines(path, lines)
 
 
 # ---------------------------------------------------------------- main
 def parse_args(argv):
-    ap = ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = tool_argument_parser(__doc__)
     ap.add_argument("--solver", required=True, help="hbm-solver executable")
     ap.add_argument("--model", help="body model include (decks/hbm50/hbm50.inc); needed to run the pelvis")
     ap.add_argument("--work", required=True, help="folder for the decks and runs")

@@ -820,8 +820,12 @@ def write_report(path, args, comparisons, ring_check):
         lines += [f"- {s}" for s in source]
         lines.append(f"- Files: `{in_repo(args.kindig)}/RibN_Kindig_avg.csv` (average) and `RibN_Kindig_cor.csv` "
                      "(corridor polygon).")
-    folder = os.path.dirname(os.path.abspath(path))
-    os.makedirs(folder, exist_ok=True)
+    write_report_lines(path, lines)
+
+
+def write_report_lines(path, lines):
+    """Writes the report's lines to path, creating its folder."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -833,6 +837,12 @@ class ArgumentParser(argparse.ArgumentParser):
     def error(self, message):
         self.print_usage(sys.stderr)
         self.exit(1, f"{self.prog}: error: {message}\n")
+
+
+def tool_argument_parser(doc):
+    """The ArgumentParser of a component tool: its module docstring's first paragraph as the
+    description, the rest kept as written."""
+    return ArgumentParser(description=doc.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
 def positive_number(text):
@@ -858,7 +868,7 @@ def tool_main(parse_args, run, argv=None):
 
 
 def parse_args(argv):
-    ap = ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = tool_argument_parser(__doc__)
     ap.add_argument("--solver", required=True, help="hbm-solver executable")
     ap.add_argument("--model", help="body model include (decks/hbm50/hbm50.inc); needed to run ribs")
     ap.add_argument("--work", required=True, help="folder for the decks and runs")

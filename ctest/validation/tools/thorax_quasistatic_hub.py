@@ -34,15 +34,15 @@ Run (from the repository root):
       --work /tmp/thorax_qs [--speed MM_PER_MS] [--stroke MM] [--report FILE.md]
 Exit 1 with a message naming the file (and line) on bad input or a failed run; 0 otherwise.
 """
-import argparse
 import os
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from isolated_rib_bending import (ArgumentParser, DriveSchedule, InputError, channel,  # noqa: E402
-                                  file_digest, fmt, in_repo, interpolate, positive_number, read_model,
-                                  read_time_history, run_hbm_solver, tool_main, SAMPLE_STROKE_MM)
+from isolated_rib_bending import (DriveSchedule, InputError, channel, file_digest, fmt,  # noqa: E402
+                                  in_repo, interpolate, positive_number, read_model, read_time_history,
+                                  run_hbm_solver, tool_argument_parser, tool_main, write_report_lines,
+                                  SAMPLE_STROKE_MM)
 
 TOOL = "ctest/validation/tools/thorax_quasistatic_hub.py"
 CASE = "hub_frontal_4p3"
@@ -324,14 +324,12 @@ def write_report(path, args, result, n_back):
         lines.append(f"| {d:g} | {fmt(result.force_at(d), '.0f')} | "
                      f"{fmt(interpolate(d, result.deflection, result.sternum), '.1f')} |")
     lines += ["", "Reference: " + __doc__.split("Reference: ", 1)[1].split("\n\n", 1)[0].replace("\n", " ")]
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    write_report_lines(path, lines)
 
 
 # ---------------------------------------------------------------- main
 def parse_args(argv):
-    ap = ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = tool_argument_parser(__doc__)
     ap.add_argument("--loadcase", required=True, help="hbm-loadcase executable")
     ap.add_argument("--solver", required=True, help="hbm-solver executable")
     ap.add_argument("--model", required=True, help="body model include (decks/hbm50/hbm50.inc)")
