@@ -152,7 +152,8 @@ def rows_of_ids(ids, per_row=8):
 
 def quasi_static_starter(path, model, schedule, speed):
     """The hub deck's starter lines turned into the quasi-static test (module docstring);
-    returns (lines, landmark node ids, number of back nodes)."""
+    returns (lines, landmark node ids, time-history ids, number of back nodes, hub axis
+    0/1/2, travel sign)."""
     with open(path) as f:
         cards = split_cards(f.read().splitlines())
     marks = landmark_nodes(path, cards)
@@ -285,8 +286,15 @@ def read_result(out, marks, th_ids, axis, sign, stroke, wall_s):
     energies = sorted(((values[first + end], key[5:].rsplit(" IE", 1)[0].split(" ", 1)[1])
                        for key, (unit, values) in parts.items() if key.startswith("part ") and key.endswith(" IE")),
                       reverse=True)
-    keep = end + 1
-    return Result(deflection[:keep], sternum[:keep], force[first:first + keep], energies, wall_s, error)
+    # the loading branch: only samples whose hub travel exceeds every earlier one (the
+    # curves are read by interpolation over the travel)
+    rows, reach = [], -1.0
+    for k in range(end + 1):
+        if deflection[k] > reach:
+            rows.append(k)
+            reach = deflection[k]
+    return Result([deflection[k] for k in rows], [sternum[k] for k in rows], [force[first + k] for k in rows],
+                  energies, wall_s, error)
 
 
 def band(values):
