@@ -30,7 +30,12 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_dir, "report folder to write (an earlier report there is replaced)")->required();
   app.add_option("--gnuplot", gnuplot, "gnuplot executable");
   app.add_flag("--quiet", quiet, "print nothing on success");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help exits 0; a bad command line is bad input: exit 1 (docs/corridors.md)
+    return app.exit(e) == 0 ? 0 : 1;
+  }
 
   fs::path tmp;
   try {

@@ -277,6 +277,20 @@ TEST_F(CorridorsCli, MalformedCaseExitsOneWithLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(CorridorsCli, BadCommandLineExitsOneNamingTheOptionAndWritesNothing) {
+  const fs::path out = work / "report_bad_option";
+  fs::remove_all(out);
+  std::string log;
+  // an unknown option and a missing required one are bad input (exit 1, docs/corridors.md),
+  // not CLI11's own codes; --help is not an error
+  EXPECT_EQ(run(cli(case_text_path(), out) + " --no-such-option", &log), 1) << log;
+  EXPECT_NE(log.find("--no-such-option"), std::string::npos) << log;
+  EXPECT_EQ(run(std::string("'") + HBM_CORRIDORS_EXE + "' --case '" + case_text_path() + "'", &log), 1) << log;
+  EXPECT_NE(log.find("--th"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(run(std::string("'") + HBM_CORRIDORS_EXE + "' --help", &log), 0) << log;
+}
+
 TEST_F(CorridorsCli, MissingColumnListsAvailableColumns) {
   const fs::path case_path = work / "missing_column.toml";
   std::string text = case_text("lebarbe2012_hub_6p7.toml");

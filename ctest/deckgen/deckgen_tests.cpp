@@ -54,11 +54,15 @@ fs::path copy_geometry(const std::string& tag) {
   return d;
 }
 
-void replace_in_file(const fs::path& f, const std::string& from, const std::string& to) {
+std::string read_file(const fs::path& f) {
   std::ifstream in(f);
   std::stringstream ss;
   ss << in.rdbuf();
-  std::string s = ss.str();
+  return ss.str();
+}
+
+void replace_in_file(const fs::path& f, const std::string& from, const std::string& to) {
+  std::string s = read_file(f);
   auto p = s.find(from);
   ASSERT_NE(p, std::string::npos) << from;
   s.replace(p, from.size(), to);
@@ -159,6 +163,25 @@ TEST(Cli, BadInputExitsOneAndWritesNothing) {
   int rc = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 1);
   EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
+}
+
+TEST(Cli, BadCommandLineExitsOneNamingTheOption) {
+  // an unknown option or a malformed value is bad input (exit 1, docs/deckgen.md), not
+  // CLI11's own codes; --help is not an error
+  fs::path out = fs::temp_directory_path() / "hbm_deckgen_test_cli_option_out";
+  fs::remove_all(out);
+  const std::string exe = std::string(HBM_DECKGEN_EXE);
+  const fs::path log = fs::temp_directory_path() / "hbm_deckgen_test_cli_option.log";
+  auto run = [&](const std::string& args) {
+    const int rc = std::system((exe + " " + args + " > " + log.string() + " 2>&1").c_str());
+    return WEXITSTATUS(rc);
+  };
+  EXPECT_EQ(run("-o " + out.string() + " --no-such-option"), 1);
+  EXPECT_NE(read_file(log).find("--no-such-option"), std::string::npos) << read_file(log);
+  EXPECT_EQ(run("-o " + out.string() + " --rib-fracture abc"), 1);
+  EXPECT_NE(read_file(log).find("--rib-fracture"), std::string::npos) << read_file(log);
+  EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
+  EXPECT_EQ(run("--help"), 0);
 }
 
 TEST(Model, ElementBudget) {
@@ -651,8 +674,5 @@ TEST(RibFracture, AgeOutsideTheFitExitsOneAndWritesNothing) {
   int rc = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 1);
   EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  EXPECT_NE(ss.str().find("rib_fracture.csv covers ages 17"), std::string::npos) << ss.str();
+  EXPECT_NE(read_file(log).find("rib_fracture.csv covers ages 17"), std::string::npos) << read_file(log);
 }

@@ -41,7 +41,13 @@ int main(int argc, char** argv) {
   app.add_option("--rib-fracture", rib_fracture_age,
                  "AGE (years): elastoplastic ribs deleted at the median failure strain of that age (rib fracture model; "
                  "default: elastic ribs)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help exits 0; a bad command line is bad input: exit 1 (docs/deckgen.md), as CLI11's
+    // own codes (105-114) would not tell a script so
+    return app.exit(e) == 0 ? 0 : 1;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   try {
     dg::GeometrySources g = dg::load_geometry(geometry);

@@ -16,7 +16,8 @@ Asserts what physics fixes:
     penalty onset and the 0.01 ms output interval;
   - normal termination, energy error below 2 %;
 and on bad input (a body without a 'sternum' part): exit 1, a message naming the missing
-part and listing the model's parts, and no output folder.
+part and listing the model's parts, and no output folder; on an unknown option: exit 2
+(usage) naming it.
 
   check_stand_in_chain.py LOADCASE_EXE SOLVER_EXE SOURCE_DIR WORK_DIR
 """
@@ -118,6 +119,15 @@ def main():
     if os.path.exists(out_bad) or any(n.startswith(".bad_case") for n in os.listdir(work)):
         fail("bad input left an output folder")
     print("ok: missing sternum part -> exit 1, parts listed, nothing written")
+
+    # A bad command line is a usage error (exit 2, like a missing --case), naming the option.
+    r = subprocess.run([loadcase, "--model", bad, "--case", "hub_frontal_6p7", "--out", out_bad, "--no-such-option"],
+                       capture_output=True, text=True)
+    if r.returncode != 2 or "--no-such-option" not in r.stderr:
+        fail(f"bad command line: exit {r.returncode}, stderr {r.stderr!r}")
+    if os.path.exists(out_bad):
+        fail("bad command line left an output folder")
+    print("ok: unknown option -> exit 2, option named, nothing written")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // hbm-loadcase: writes the pendulum (hub) impact validation decks on the generated body
 // model: decks/<case>/<case>_0000.rad + _0001.rad, which #include decks/hbm50/hbm50.inc.
+// Exit codes: 0 written; 1 bad input (the file named, nothing written); 2 usage (a bad
+// command line, no --case).
 #include "hbm/deckgen/loadcases/load_case.hpp"
 #include "hbm/deckgen/loadcases/posed_model.hpp"
 
@@ -28,7 +30,12 @@ int main(int argc, char** argv) {
   app.add_flag("--list", list, "list the cases and exit");
   app.add_flag("--print-corridor-case", print_corridor,
                "print the hbm-corridors case file of each --case (path from the repository root) and exit");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help exits 0; a bad command line is a usage error: exit 2, like a missing --case
+    return app.exit(e) == 0 ? 0 : 2;
+  }
   if (list) {
     for (const auto& c : catalogue())
       std::cout << c.name << "  " << c.title << "  [" << c.reference << "; " << c.corridor_case << "]\n";
