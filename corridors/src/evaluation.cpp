@@ -160,14 +160,15 @@ private:
       const long c = find_column(*t, s.column);
       if (c >= 0 && static_cast<std::size_t>(c) != t->time_column) hits.emplace_back(t, c);
     }
-    if (s.sum_columns) return sum_of_columns(s, hits, searched, skipped);
     if (hits.empty()) {
       std::string avail;
       for (const TimeHistoryTable* t : searched) avail += "\n " + t->path + ":" + list_columns(*t);
       avail += skipped;
-      throw InputError(cd_.path, s.line, "signal '" + s.name + "': column '" + s.column +
-                                             "' not found (exact header, name or unique substring); available columns:" + avail);
+      const std::string what = s.sum_columns ? "no column name matches '" + s.column + "'"
+                                             : "column '" + s.column + "' not found (exact header, name or unique substring)";
+      throw InputError(cd_.path, s.line, "signal '" + s.name + "': " + what + "; available columns:" + avail);
     }
+    if (s.sum_columns) return sum_of_columns(s, hits);
     if (hits.size() > 1) {
       std::string which;
       for (const auto& [t, c] : hits) which += "\n  " + t->path + ": " + t->headers[static_cast<std::size_t>(c)];
@@ -182,27 +183,20 @@ private:
   // A signal that sums every column whose name matches the pattern `column` ('*' and '?'
   // wildcards; sum_columns = true), e.g. the deleted elements of every rib part. The columns
   // must share one file (one time base) and one unit.
-  RawSignal sum_of_columns(const SignalDef& s, const std::vector<std::pair<const TimeHistoryTable*, long>>& hits,
-                           const std::vector<const TimeHistoryTable*>& searched, const std::string& skipped) {
-    if (hits.empty()) {
-      std::string avail;
-      for (const TimeHistoryTable* t : searched) avail += "\n " + t->path + ":" + list_columns(*t);
-      avail += skipped;
-      throw InputError(cd_.path, s.line, "signal '" + s.name + "': no column name matches '" + s.column + "'; available columns:" + avail);
-    }
+  RawSignal sum_of_columns(const SignalDef& s, const std::vector<std::pair<const TimeHistoryTable*, long>>& hits) {
     const TimeHistoryTable& t = *hits[0].first;
+    const auto c0 = static_cast<std::size_t>(hits[0].second);
     std::vector<double> sum(t.n_rows(), 0.0);
     for (const auto& [tt, c] : hits) {
       const auto cc = static_cast<std::size_t>(c);
       if (tt != &t)
         throw InputError(cd_.path, s.line, "signal '" + s.name + "': columns matching '" + s.column + "' are in " + t.path +
                                                " and " + tt->path + "; give 'file'");
-      if (tt->units[cc] != t.units[static_cast<std::size_t>(hits[0].second)])
+      if (tt->units[cc] != t.units[c0])
         throw InputError(cd_.path, s.line, "signal '" + s.name + "': columns matching '" + s.column + "' have different units ('" +
-                                               t.headers[static_cast<std::size_t>(hits[0].second)] + "', '" + tt->headers[cc] + "')");
+                                               t.headers[c0] + "', '" + tt->headers[cc] + "')");
       for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += tt->columns[cc][i];
     }
-    const auto c0 = static_cast<std::size_t>(hits[0].second);
     const std::string header = "sum of " + std::to_string(hits.size()) + " columns matching '" + s.column + "'";
     return to_raw(s, t, sum, header, t.units[c0]);
   }
