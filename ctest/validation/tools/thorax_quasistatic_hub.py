@@ -41,8 +41,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from isolated_rib_bending import (DriveSchedule, InputError, channel, file_digest, fmt,  # noqa: E402
                                   in_repo, interpolate, positive_number, read_model, read_time_history,
-                                  run_hbm_solver, tool_argument_parser, tool_main, write_report_lines,
-                                  SAMPLE_STROKE_MM)
+                                  run_hbm_solver, tool_argument_parser, tool_main, write_report_lines)
 
 TOOL = "ctest/validation/tools/thorax_quasistatic_hub.py"
 CASE = "hub_frontal_4p3"
@@ -53,6 +52,7 @@ CAVANAUGH_STERNUM = (6.0, 10.0)     # N/mm, cadavers, sternum
 CAVANAUGH_HYBRID3 = (26.0, 44.0)    # N/mm, Hybrid III, sternum
 REPORT_AT_MM = (5.0, 10.0, 15.0, 20.0, CAVANAUGH_STROKE_MM)
 CONTACT_FORCE_N = 1.0        # first contact: the hub force first exceeds this
+OUTPUT_STROKE_MM = 0.1       # time histories every 0.1 mm of hub travel
 
 
 # ---------------------------------------------------------------- deck
@@ -171,15 +171,19 @@ def quasi_static_starter(path, model, schedule, speed):
     sign = 1.0 if travel[axis] > 0 else -1.0
     t8 = model.node(marks["T8"], "the T8 landmark")
     back = back_support_nodes(model, t8[axis], sign)
-    out = []
+    out, guided = [], False
     for key, body in cards:
         if key and key.startswith("/INIVEL/TRA/"):
             continue  # the hub is driven instead
         if key == "/END":
             break
-        if key and key.startswith("/BCS/") and any("impactor" in line for line in body[:1]):
+        if key and key.startswith("/BCS/") and body and "impactor" in body[0]:
+            # the hub's rotations stay fixed; its translations across the drive axis too
             body = [body[0], "   " + "".join("0" if k == axis else "1" for k in range(3)) + " 111" + body[1][10:]]
+            guided = True
         out += ([key] if key else []) + body
+    if not guided:
+        raise InputError(f"{path}: no /BCS card titled 'impactor ...' (the hub deck guides its impactor with one)")
     direction = "XYZ"[axis]
     # ids of the drive and the back support: above every id of the deck (hbm-loadcase numbers
     # its cards above the model's)
@@ -205,7 +209,7 @@ def engine_lines(path, schedule, speed):
         if key and key.startswith("/RUN/"):
             body = [f"{schedule.tstop:g}"] + body[1:]
         elif key and key.startswith("/TFILE/"):
-            body = [f"{SAMPLE_STROKE_MM * 10 / speed:g}"] + body[1:]  # every 0.1 mm of stroke
+            body = [f"{OUTPUT_STROKE_MM / speed:g}"] + body[1:]
         elif key and key.startswith("/ANIM/DT"):
             body = [f"0 {schedule.tstop / 5:g}"] + body[1:]
         out += ([key] if key else []) + body
@@ -283,8 +287,9 @@ def read_result(out, marks, th_ids, axis, sign, stroke, wall_s):
         raise InputError(f"{node_csv}: the hub travelled {deflection[end]:.1f} mm after first contact, "
                          f"less than the {stroke:g} mm stroke")
     # the solver writes the part histories on the same cycles: row first + end
-    energies = sorted(((values[first + end], key[5:].rsplit(" IE", 1)[0].split(" ", 1)[1])
-                       for key, (unit, values) in parts.items() if key.startswith("part ") and key.endswith(" IE")),
+    # columns 'part ID TITLE IE'
+    energies = sorted(((values[first + end], key[len("part "):-len(" IE")].split(" ", 1)[1])
+                       for key, (_, values) in parts.items() if key.startswith("part ") and key.endswith(" IE")),
                       reverse=True)
     # the loading branch: only samples whose hub travel exceeds every earlier one (the
     # curves are read by interpolation over the travel)
