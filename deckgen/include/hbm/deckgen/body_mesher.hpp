@@ -47,7 +47,6 @@ struct ModelLandmarks {
 
 FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks = nullptr);
 
-
 // Sandwich plate (two cortices tc on a core, total thickness T) as one shell: per unit width
 // I = (T^3 - (T - 2 tc)^3) / 12 and A = 2 tc of the cortices; a shell of thickness
 // t = sqrt(12 I / A) and modulus E A / t (modulus_scale = A / t) has the cortices' membrane
