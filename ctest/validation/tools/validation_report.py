@@ -6,6 +6,7 @@ typed in: every number is read from a run (solver listing and time-history CSV, 
 time measured by validate.sh) or from the hbm-corridors summary.json of that run.
 
   validation_report.py --work DIR --cases "a b ..." --model FILE --out FILE.md --images DIR
+  validation_report.py --check-speed-scaling   (self-check of the power-law fit; CTest)
 
 Per case the work folder holds runs/CASE/ (solver output), runs/CASE.run.txt (exit code,
 wall time), runs/CASE.loadcase.txt (hbm-loadcase summary), reports/CASE/summary.json.
@@ -17,6 +18,7 @@ import datetime
 import glob
 import hashlib
 import json
+import math
 import os
 import re
 import shutil
@@ -164,6 +166,70 @@ def listing_facts(run_dir, case):
     return facts
 
 
+SPEED_SUFFIX = re.compile(r"_(\d+)p(\d+)$")  # hub_frontal_6p7 -> 6.7 m/s
+
+
+def case_speed(case):
+    """Impact speed [m/s] written in a case name's suffix (hub_frontal_6p7 -> 6.7), else None."""
+    m = SPEED_SUFFIX.search(case)
+    return float(f"{m.group(1)}.{m.group(2)}") if m else None
+
+
+def speed_exponent(speeds, peaks):
+    """n of peak = a v^n, least squares in log-log over (speed, peak) pairs; None unless
+    there are two distinct speeds and every value is positive. An elastic body struck by a
+    mass gives n = 1 (F_peak = v sqrt(k m)); a stiffening path (F ~ x^m: n = 2m/(m+1)) or a
+    v^2 resistance gives more."""
+    pts = [(math.log(v), math.log(f)) for v, f in zip(speeds, peaks) if v and f and v > 0 and f > 0]
+    if len(pts) != len(speeds) or len({x for x, _ in pts}) < 2:
+        return None
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sxx
+
+
+def speed_scaling_rows(ratings):
+    """One row per channel family (a rating name less its speed suffix) rated at two or
+    more speeds: speeds, model and reference peaks, and the exponent of each."""
+    families = {}
+    for x in ratings:
+        v = case_speed(x["case"])
+        fam = SPEED_SUFFIX.sub("", x["name"])
+        if v is None or fam == x["name"] or x["model_peak"] is None or x["ref_peak"] is None:
+            continue
+        families.setdefault(fam, []).append((v, x["model_peak"], x["ref_peak"], x["unit"]))
+    rows = []
+    for fam, pts in families.items():
+        pts.sort()
+        if len({p[0] for p in pts}) < 2:
+            continue
+        v = [p[0] for p in pts]
+        rows.append({"family": fam, "speeds": v, "model": [p[1] for p in pts], "ref": [p[2] for p in pts],
+                     "unit": pts[0][3], "n_model": speed_exponent(v, [p[1] for p in pts]),
+                     "n_ref": speed_exponent(v, [p[2] for p in pts])})
+    return rows
+
+
+def check_speed_scaling():
+    """Self-check: exact power laws give their exponent back; one speed gives no row."""
+    ok = True
+    for n, speeds in [(1.5, [4.4, 6.5, 9.5]), (1.0, [4.3, 6.7]), (2.0, [2.0, 3.0])]:
+        got = speed_exponent(speeds, [3.0 * v ** n for v in speeds])
+        print(f"F = 3 v^{n} at {speeds} m/s: fitted n = {got:.6f}")
+        ok &= abs(got - n) < 1e-9
+    ratings = [{"case": c, "name": f"f_{c[-3:]}", "model_peak": 2.0 * case_speed(c) ** 1.1,
+                "ref_peak": case_speed(c) ** 1.6, "unit": "kN"} for c in ("hub_a_4p3", "hub_a_6p7")]
+    ratings.append({"case": "hub_b_5p2", "name": "g_5p2", "model_peak": 1.0, "ref_peak": 1.0, "unit": "kN"})
+    rows = speed_scaling_rows(ratings)
+    print(f"families rated at two or more speeds: {[r['family'] for r in rows]}")
+    ok &= len(rows) == 1 and rows[0]["family"] == "f" and abs(rows[0]["n_model"] - 1.1) < 1e-9 \
+        and abs(rows[0]["n_ref"] - 1.6) < 1e-9 and speed_exponent([5.0, 5.0], [1.0, 2.0]) is None \
+        and speed_exponent([4.0, 6.0], [1.0, 0.0]) is None
+    print("speed scaling check:", "OK" if ok else "FAILED")
+    return 0 if ok else 1
+
+
 def fmt(v, p=2):
     if v is None:
         return "-"
@@ -178,6 +244,8 @@ def per_case_parts_table(L, runs, intro, column, empty, cells):
 
 
 def main():
+    if sys.argv[1:] == ["--check-speed-scaling"]:
+        return check_speed_scaling()
     ap = argparse.ArgumentParser()
     ap.add_argument("--work", required=True)
     ap.add_argument("--cases", required=True)
@@ -348,6 +416,23 @@ def main():
     if not ratings:
         L.append("| - | no rating (see notes) | | | | | | | | | | | | |")
     L.append("")
+    scaling = speed_scaling_rows(ratings)
+    if scaling:
+        L.append("## Speed scaling of the peak force")
+        L.append("")
+        L.append("F_peak = a v^n fitted through the peaks of each channel rated at two or more impact speeds "
+                 "(least squares in log-log). An elastic body struck by a mass gives n = 1 (F_peak = v sqrt(k m)); "
+                 "a stiffening load path (F ~ x^3 gives 1.5) or a resistance growing as v^2 gives more. A model whose "
+                 "n is below the tests' is too stiff at the low speed or too soft at the high one "
+                 "(`geometry/calibration-notes-validation.md`).")
+        L.append("")
+        L.append("| channel | speeds [m/s] | model peaks | reference peaks | n model | n reference |")
+        L.append("|---|---|---|---|---|---|")
+        for r in scaling:
+            L.append(f"| {r['family']} | {' / '.join(fmt(v, 1) for v in r['speeds'])} | "
+                     f"{' / '.join(fmt(v) for v in r['model'])} {r['unit']} | {' / '.join(fmt(v) for v in r['ref'])} {r['unit']} | "
+                     f"{fmt(r['n_model'])} | {fmt(r['n_ref'])} |")
+        L.append("")
     L.append("## Plots")
     L.append("")
     for x in ratings:
