@@ -7,6 +7,7 @@
 #include "hbm/deckgen/deck_export.hpp"
 #include "hbm/deckgen/geometry_sources.hpp"
 #include "hbm/deckgen/model_checks.hpp"
+#include "hbm/deckgen/organ_variants.hpp"
 #include "hbm/deckgen/surface_io.hpp"
 #include "hbm/deckgen/table.hpp"
 
@@ -41,6 +42,13 @@ int main(int argc, char** argv) {
   app.add_option("--rib-fracture", rib_fracture_age,
                  "AGE (years): elastoplastic ribs deleted at the median failure strain of that age (rib fracture model; "
                  "default: elastic ribs)");
+  bool pleura = false;
+  app.add_flag("--pleura", pleura,
+               "variant: the thoracic organ block slides on the chest wall (frictionless contact; default: shared nodes)");
+  double mediastinum = 0;
+  app.add_option("--mediastinum", mediastinum,
+                 "HALF_WIDTH (mm), variant: the thoracic organ block within HALF_WIDTH of the mid-plane is water-like "
+                 "(abdominal organ set; default: all air-filled)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -85,6 +93,8 @@ int main(int argc, char** argv) {
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
     dg::assign_rigid_body_masses(m, g, lm);
+    if (pleura) dg::add_pleura(m);
+    if (app.count("--mediastinum")) dg::add_mediastinum(m, mediastinum);
     m.notes.push_back("hbm-deckgen: 50th percentile male driver model from geometry sources " + g.dir.filename().string() + "/ (units kg mm ms)");
     if (o.rib_fracture_age >= 0)
       m.notes.push_back("rib fracture model: elastoplastic ribs deleted at the median failure strain at " +
