@@ -93,12 +93,12 @@ int main(int argc, char** argv) {
     dg::ModelLandmarks lm;
     dg::FeModel m = dg::build_body_model(g, o, &lm);
     dg::assign_rigid_body_masses(m, g, lm);
-    if (pleura) dg::add_pleura(m);
-    if (app.count("--mediastinum")) dg::add_mediastinum(m, mediastinum);
     m.notes.push_back("hbm-deckgen: 50th percentile male driver model from geometry sources " + g.dir.filename().string() + "/ (units kg mm ms)");
     if (o.rib_fracture_age >= 0)
       m.notes.push_back("rib fracture model: elastoplastic ribs deleted at the median failure strain at " +
                         std::to_string(std::lround(o.rib_fracture_age)) + " years (--rib-fracture)");
+    if (pleura) dg::add_pleura(m);
+    if (app.count("--mediastinum")) dg::add_mediastinum(m, mediastinum);
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";
     bool ok = dg::print_budget(std::cout, dg::element_budget(m), 10000, 12000);
