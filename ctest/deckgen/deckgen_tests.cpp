@@ -180,7 +180,7 @@ TEST(Cli, BadCommandLineExitsOneNamingTheOption) {
   EXPECT_NE(read_file(log).find("--no-such-option"), std::string::npos) << read_file(log);
   EXPECT_EQ(run("-o " + out.string() + " --rib-fracture abc"), 1);
   EXPECT_NE(read_file(log).find("--rib-fracture"), std::string::npos) << read_file(log);
-  EXPECT_EQ(run("-o " + out.string() + " --mediastinum -3"), 1);
+  EXPECT_EQ(run("-g " + kGeometry.string() + " -o " + out.string() + " --mediastinum -3"), 1);
   EXPECT_NE(read_file(log).find("mediastinum: the half width"), std::string::npos) << read_file(log);
   EXPECT_FALSE(fs::exists(out / "hbm50.inc"));
   EXPECT_EQ(run("--help"), 0);
