@@ -5,8 +5,8 @@
 # biofidelity table docs/validation.md (ctest/validation/tools/validation_report.py).
 #
 #   scripts/validate.sh [--build DIR] [--work DIR] [--cases "NAME ..."|all] [--tstop MS]
-#                       [--model FILE] [--doc FILE|--no-doc] [--threads N] [--jobs N]
-#                       [--deck-hook SCRIPT]
+#                       [--model FILE | --deckgen "OPTIONS"] [--geometry DIR]
+#                       [--doc FILE|--no-doc] [--threads N] [--jobs N] [--deck-hook SCRIPT]
 #
 # Defaults: build/, work folder out/validation, all cases, 60 ms, decks/hbm50/hbm50.inc,
 # docs/validation.md. With the default end time the decks are (re)generated in place in
@@ -17,25 +17,31 @@
 # normally and every rating was written, 1 otherwise, 2 on bad usage. --deck-hook SCRIPT:
 # `bash SCRIPT CASE_0000.rad` runs on every generated case deck before the runs (a model
 # variant that rewrites the model the deck includes); with --tstop only, so that the committed
-# decks are not touched.
+# decks are not touched. --deckgen "OPTIONS": validate a model variant instead of --model:
+# hbm-deckgen OPTIONS (e.g. "--pleura --mediastinum 25", docs/deckgen.md) builds the body
+# model and its posed variant (the arm-raised model of the oblique cases) into WORK/model/;
+# with --tstop only, as --deck-hook. --geometry DIR: the geometry sources hbm-loadcase (and
+# hbm-deckgen for --deckgen) read (default geometry).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 build=build work=out/validation cases=all tstop="" model=decks/hbm50/hbm50.inc doc=docs/validation.md
-threads="" jobs=1 deck_hook=""
+threads="" jobs=1 deck_hook="" deckgen_options="" deckgen_set="" model_set="" geometry=geometry
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     --cases) cases=$2; shift 2 ;;
     --tstop) tstop=$2; shift 2 ;;
-    --model) model=$2; shift 2 ;;
+    --model) model=$2; model_set=1; shift 2 ;;
+    --deckgen) deckgen_options=$2; deckgen_set=1; shift 2 ;;
+    --geometry) geometry=$2; shift 2 ;;
     --doc) doc=$2; shift 2 ;;
     --no-doc) doc=""; shift ;;
     --threads) threads=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --deck-hook) deck_hook=$2; shift 2 ;;
-    -h|--help) sed -n '3,20p' "$0"; exit 0 ;;
+    -h|--help) sed -n '3,25p' "$0"; exit 0 ;;
     *) echo "validate.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -43,6 +49,33 @@ bin=$build/bin
 for t in hbm-loadcase hbm-solver hbm-corridors; do
   [[ -x $bin/$t ]] || { echo "validate.sh: $bin/$t not built (cmake --build $build --target $t)" >&2; exit 2; }
 done
+if [[ -n $deckgen_set ]]; then
+  [[ -z $model_set ]] || { echo "validate.sh: --deckgen builds the model: give --model or --deckgen, not both" >&2; exit 2; }
+  [[ -n $tstop ]] || { echo "validate.sh: --deckgen needs --tstop (the committed decks are not rewritten for a variant)" >&2; exit 2; }
+  [[ -x $bin/hbm-deckgen ]] || { echo "validate.sh: $bin/hbm-deckgen not built (cmake --build $build --target hbm-deckgen)" >&2; exit 2; }
+  # The base model, and each posed variant the cases run on (hbm-loadcase --print-posed-model:
+  # its path beside the base model's folder, as in decks/, and the options that pose it),
+  # all with the variant's options.
+  read -r -a variant <<< "$deckgen_options"
+  rm -rf "$work/model"
+  mkdir -p "$work/model"
+  deckgen_variant() {  # FOLDER NAME [OPTIONS...]
+    local dir=$1 name=$2
+    shift 2
+    "$bin/hbm-deckgen" -g "$geometry" -o "$work/model/$dir" -n "$name" --no-drop "$@" "${variant[@]}" \
+      > "$work/model/$dir.log" 2>&1 ||
+      { echo "validate.sh: hbm-deckgen ${*:+$* }${deckgen_options} failed (see $work/model/$dir.log):" >&2
+        tail -3 "$work/model/$dir.log" >&2; exit 1; }
+  }
+  deckgen_variant hbm50 hbm50
+  [[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
+  for c in $cases; do "$bin/hbm-loadcase" --case "$c" --print-posed-model; done | sort -u |
+    while read -r posed pose; do
+      [[ -f $work/model/$posed ]] || deckgen_variant "$(dirname "$posed")" "$(basename "$posed" .inc)" $pose
+    done
+  model=$work/model/hbm50/hbm50.inc
+  echo "model variant: hbm-deckgen ${deckgen_options} -> $model"
+fi
 [[ -f $model ]] || { echo "validate.sh: no body model $model (generate it with hbm-deckgen)" >&2; exit 1; }
 if [[ -n $deck_hook ]]; then
   [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
@@ -54,7 +87,7 @@ if [[ -n $tstop ]]; then decks=$work/decks; else decks=decks; fi
 
 # 1. decks
 for c in $cases; do
-  args=(--model "$model" --geometry geometry --case "$c" --decks "$decks")
+  args=(--model "$model" --geometry "$geometry" --case "$c" --decks "$decks")
   [[ -n $tstop ]] && args+=(--tstop "$tstop")
   "$bin/hbm-loadcase" "${args[@]}" | tee "$work/runs/$c.loadcase.txt"
 done

@@ -43,7 +43,7 @@ TEST(LoadCasePosedModel, CommittedVariantIsTheBaseModelWithTheArmMoved) {
   const fs::path posed_path = lc::posed_model_path(kBase, spec.posed_model);
   ASSERT_TRUE(fs::exists(posed_path)) << posed_path;
   const lc::ModelView base = lc::read_model(kBase), posed = lc::read_model(posed_path);
-  EXPECT_NO_THROW(lc::check_posed_model(base, posed, spec.posed_part_prefixes, spec.posed_model_command));
+  EXPECT_NO_THROW(lc::check_posed_model(base, posed, spec.posed_part_prefixes, spec.posed_model_command()));
   // The arm did move: a 60 deg turn about the shoulder moves every arm node (the nearest to
   // the joint axis by a few mm) and the hand by more than the arm's 300 mm reach times 2 sin 30.
   double farthest = 0;
@@ -71,7 +71,7 @@ TEST(LoadCasePosedModel, StaleVariantIsRefused) {
   std::ofstream(dir / "stale.inc") << s;
   const lc::ModelView base = lc::read_model(kBase), stale = lc::read_model(dir / "stale.inc");
   try {
-    lc::check_posed_model(base, stale, spec.posed_part_prefixes, spec.posed_model_command);
+    lc::check_posed_model(base, stale, spec.posed_part_prefixes, spec.posed_model_command());
     FAIL() << "a stale posed model was accepted";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();

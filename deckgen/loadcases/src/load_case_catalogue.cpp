@@ -11,6 +11,8 @@
 // turning the model, whose /PROP/TYPE8 joints have global axes).
 #include "hbm/deckgen/loadcases/load_case.hpp"
 
+#include <filesystem>
+
 namespace hbm::deckgen::loadcases {
 
 namespace {
@@ -53,13 +55,19 @@ LoadCaseSpec oblique(const char* name, double v, const char* corridor) {
   s.limb_part_prefixes = {"upper_arm_l", "forearm_hand_l"};
   s.posed_model = "hub_posed_arm_l_raised/hbm50_arm_l_raised.inc";
   s.posed_part_prefixes = {"upper_arm_l", "forearm_hand_l", "joint_shoulder", "joint_elbow"};  // springs move with the arm
-  s.posed_model_command =
-      "hbm-deckgen -g geometry -o decks/hub_posed_arm_l_raised -n hbm50_arm_l_raised --no-drop --joint shoulder_l=-60";
+  s.posed_model_options = "--joint shoulder_l=-60";
   s.posture = "left arm raised out of the impactor's path (shoulder_l -60 deg: upper arm forward-up, elbow at shoulder height)";
   return s;
 }
 
 }  // namespace
+
+std::string LoadCaseSpec::posed_model_command() const {
+  if (posed_model.empty()) return "";
+  const std::filesystem::path p(posed_model);
+  return "hbm-deckgen -g geometry -o decks/" + p.parent_path().string() + " -n " + p.stem().string() + " --no-drop " +
+         posed_model_options;
+}
 
 const std::vector<LoadCaseSpec>& catalogue() {
   static const std::vector<LoadCaseSpec> cases = [] {

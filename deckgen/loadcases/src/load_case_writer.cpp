@@ -375,7 +375,7 @@ GeneratedCase generate_load_case(const LoadCaseSpec& spec, const ModelView& mode
   head << " on the impactor face (friction " << fmt(spec.friction, 2)
        << ", critical damping VISs " << fmt(spec.contact_damping, 2) << ").\n"
        << (spec.posture.empty() ? std::string() : "# Posture: " + spec.posture + ", model " + spec.posed_model + " = " +
-                                                     spec.posed_model_command + ".\n")
+                                                     spec.posed_model_command() + ".\n")
        << "# Subject free (no seat, no back support, no gravity: the event lasts " << fmt(spec.tstop_ms, 0) << " ms).\n"
        << "# Time histories: /TH/NODE/" << obj + 1 << " (impactor main node, " << spec.spine_level << " node "
        << g.spine_node << ", sternum node " << g.sternum_node << "), /TH/RBODY/" << obj + 2 << ", /TH/INTER/" << obj + 3

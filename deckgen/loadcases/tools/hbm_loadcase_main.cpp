@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   std::string model = "decks/hbm50/hbm50.inc", geometry = "geometry", decks_dir = "decks", out;
   std::vector<std::string> cases;
   double speed = 0, tstop = 0;
-  bool list = false, print_corridor = false;
+  bool list = false, print_corridor = false, print_posed = false;
   app.add_option("--model", model, "body model deck (included by the load-case decks)");
   app.add_option("--geometry", geometry, "geometry sources (spine and pelvis landmarks)");
   app.add_option("--case", cases, "case name(s), or 'all' (see --list)");
@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
   app.add_flag("--list", list, "list the cases and exit");
   app.add_flag("--print-corridor-case", print_corridor,
                "print the hbm-corridors case file of each --case (path from the repository root) and exit");
+  app.add_flag("--print-posed-model", print_posed,
+               "print, for each --case that runs on a posed variant of the model, its path (relative to the folder "
+               "holding the model's folder) and the hbm-deckgen options that pose it, on one line; and exit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -70,6 +73,11 @@ int main(int argc, char** argv) {
     for (const auto& s : specs) std::cout << s.corridor_case << "\n";
     return 0;
   }
+  if (print_posed) {
+    for (const auto& s : specs)
+      if (!s.posed_model.empty()) std::cout << s.posed_model << " " << s.posed_model_options << "\n";
+    return 0;
+  }
   try {
     const ModelView m = read_model(model);
     std::map<std::string, ModelView> posed;  // posed variants read once (posed_model.hpp)
@@ -81,11 +89,11 @@ int main(int argc, char** argv) {
         use_path = posed_model_path(model, s.posed_model);
         if (!std::filesystem::exists(use_path))
           throw std::runtime_error(s.name + ": no posed model " + use_path.string() + "; write it from the repository root: " +
-                                   s.posed_model_command);
+                                   s.posed_model_command());
         auto it = posed.find(use_path.string());
         if (it == posed.end()) {
           it = posed.emplace(use_path.string(), read_model(use_path)).first;
-          check_posed_model(m, it->second, s.posed_part_prefixes, s.posed_model_command);
+          check_posed_model(m, it->second, s.posed_part_prefixes, s.posed_model_command());
         }
         use = &it->second;
         // relative to the current folder like --model, so the deck's #include is relative too

@@ -52,8 +52,11 @@ struct LoadCaseSpec {
   // must equal the base model except for the nodes of posed_part_prefixes.
   std::string posed_model;
   std::vector<std::string> posed_part_prefixes;
-  std::string posed_model_command;  // the hbm-deckgen command that writes the variant
+  std::string posed_model_options;  // the hbm-deckgen options that pose it, e.g. "--joint shoulder_l=-60"
   std::string posture;              // one line for the deck header
+  // The hbm-deckgen command, run from the repository root, that writes the posed variant
+  // beside decks/hbm50/ ("" without one).
+  std::string posed_model_command() const;
   std::string spine_level = "T8";
   double tstop_ms = 60;
   double initial_clearance_mm = 3;  // impactor surface to the nearest contact node in its footprint
