@@ -49,6 +49,11 @@ bin=$build/bin
 for t in hbm-loadcase hbm-solver hbm-corridors; do
   [[ -x $bin/$t ]] || { echo "validate.sh: $bin/$t not built (cmake --build $build --target $t)" >&2; exit 2; }
 done
+if [[ -n $deck_hook ]]; then
+  [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
+  [[ -f $deck_hook ]] || { echo "validate.sh: --deck-hook $deck_hook: no such file" >&2; exit 2; }
+fi
+[[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
 if [[ -n $deckgen_set ]]; then
   [[ -z $model_set ]] || { echo "validate.sh: --deckgen builds the model: give --model or --deckgen, not both" >&2; exit 2; }
   [[ -n $tstop ]] || { echo "validate.sh: --deckgen needs --tstop (the committed decks are not rewritten for a variant)" >&2; exit 2; }
@@ -68,20 +73,14 @@ if [[ -n $deckgen_set ]]; then
         tail -3 "$work/model/$dir.log" >&2; exit 1; }
   }
   deckgen_variant hbm50 hbm50
-  [[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
   for c in $cases; do "$bin/hbm-loadcase" --case "$c" --print-posed-model; done | sort -u |
     while read -r posed pose; do
-      [[ -f $work/model/$posed ]] || deckgen_variant "$(dirname "$posed")" "$(basename "$posed" .inc)" $pose
+      deckgen_variant "$(dirname "$posed")" "$(basename "$posed" .inc)" $pose
     done
   model=$work/model/hbm50/hbm50.inc
   echo "model variant: hbm-deckgen ${deckgen_options} -> $model"
 fi
 [[ -f $model ]] || { echo "validate.sh: no body model $model (generate it with hbm-deckgen)" >&2; exit 1; }
-if [[ -n $deck_hook ]]; then
-  [[ -n $tstop ]] || { echo "validate.sh: --deck-hook needs --tstop (it edits the decks it is given)" >&2; exit 2; }
-  [[ -f $deck_hook ]] || { echo "validate.sh: --deck-hook $deck_hook: no such file" >&2; exit 2; }
-fi
-[[ $cases == all ]] && cases=$("$bin/hbm-loadcase" --list | awk '{print $1}')
 mkdir -p "$work/runs" "$work/reports"
 if [[ -n $tstop ]]; then decks=$work/decks; else decks=decks; fi
 

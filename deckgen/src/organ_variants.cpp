@@ -96,24 +96,24 @@ std::size_t add_mediastinum(FeModel& m, double half_width) {
   const int organs = required_part(m, "thoracic_organs", "mediastinum");
   const int material = m.find_material("abdominal_organs");
   if (material < 0) throw std::invalid_argument("mediastinum: the model has no material abdominal_organs");
-  // The band's elements, found before the model changes (an error leaves it as it was).
-  auto in_band = [&](const auto& nodes) {
+  // The band's elements (their part entries), found before the model changes: an error
+  // leaves it as it was.
+  std::vector<int*> band;
+  for_each_solid(m, [&](const auto& nodes, int& part) {
+    if (part != organs) return;
     double y = 0;
     for (int n : nodes) y += m.nodes[static_cast<std::size_t>(n)].y();
-    return std::abs(y / static_cast<double>(nodes.size())) < half_width;
-  };
-  std::size_t moved = 0;
-  for_each_solid(m, [&](const auto& nodes, int part) { moved += part == organs && in_band(nodes); });
-  if (moved == 0)
+    if (std::abs(y / static_cast<double>(nodes.size())) < half_width) band.push_back(&part);
+  });
+  if (band.empty())
     throw std::invalid_argument("mediastinum: no thoracic organ element has its centroid within " + hw.str() +
                                 " mm of the mid-plane");
   FePart p = m.parts[static_cast<std::size_t>(organs)];
   p.name = "mediastinum";
   p.material = material;
-  const int mediastinum = m.add_part(p);
-  for_each_solid(m, [&](const auto& nodes, int& part) {
-    if (part == organs && in_band(nodes)) part = mediastinum;
-  });
+  const int mediastinum = m.add_part(p);  // grows m.parts only: the part entries stay valid
+  for (int* part : band) *part = mediastinum;
+  const std::size_t moved = band.size();
   // Under a pleura the band slides on the wall with the rest of the block.
   for (FeInterface& f : m.interfaces)
     if (std::find(f.main_parts.begin(), f.main_parts.end(), organs) != f.main_parts.end()) f.main_parts.push_back(mediastinum);

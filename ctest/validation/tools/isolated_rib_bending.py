@@ -824,10 +824,13 @@ def write_report(path, args, comparisons, ring_check):
 
 
 def write_report_lines(path, lines):
-    """Writes the report's lines to path, creating its folder."""
+    """Writes the report's lines to path, creating its folder; whole or not at all (a
+    temporary file beside it, renamed)."""
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w") as f:
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
         f.write("\n".join(lines) + "\n")
+    os.replace(tmp, path)
 
 
 # ---------------------------------------------------------------- main

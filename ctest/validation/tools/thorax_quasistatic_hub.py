@@ -40,7 +40,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from isolated_rib_bending import (DriveSchedule, InputError, channel, file_digest, fmt,  # noqa: E402
-                                  in_repo, interpolate, positive_number, read_model, read_time_history,
+                                  ids_in_rows_of_10, in_repo, interpolate, positive_number, read_model, read_time_history,
                                   run_hbm_solver, tool_argument_parser, tool_main, write_report_lines)
 
 TOOL = "ctest/validation/tools/thorax_quasistatic_hub.py"
@@ -146,10 +146,6 @@ def back_support_nodes(model, t8_x, travel_sign):
     return sorted(behind)
 
 
-def rows_of_ids(ids, per_row=8):
-    return ["".join(f"{n:10d}" for n in ids[k:k + per_row]) for k in range(0, len(ids), per_row)]
-
-
 def quasi_static_starter(path, model, schedule, speed):
     """The hub deck's starter lines turned into the quasi-static test (module docstring);
     returns (lines, landmark node ids, time-history ids, number of back nodes, hub axis
@@ -194,7 +190,7 @@ def quasi_static_starter(path, model, schedule, speed):
             f"/IMPVEL/{drive_id}", "hub driven at constant speed",
             f"{drive_id:10d}{direction:>10}{0:10d}{0:10d}{drive_id:10d}",
             f"{1.0:20.10E}{sign * speed:20.10E}{0.0:20.10E}{0.0:20.10E}",
-            f"/GRNOD/NODE/{back_id}", "back support: thorax skin behind T8"] + rows_of_ids(back)
+            f"/GRNOD/NODE/{back_id}", "back support: thorax skin behind T8"] + ids_in_rows_of_10(back)
     out += [f"/BCS/{back_id}", "back support (subject supine on a rigid frame)",
             f"   111 000{0:10d}{back_id:10d}", "/END"]
     return out, marks, th_ids, len(back), axis, sign
