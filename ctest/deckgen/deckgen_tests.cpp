@@ -123,6 +123,27 @@ TEST(GeometrySources, BadWidestForwardAndNeckShareStopWithFileLine) {
   }
 }
 
+// Every row the mesher asks for by name is required by its reader: a source without the
+// thoracic inlet fascia (its section or its material) names the file and the row, where
+// it used to stop with a bare "map::at" (found by mutating the sources).
+TEST(GeometrySources, MissingInletFasciaRowNamesFileAndRow) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"shell_sections.csv", "thoracic_inlet_fascia,0.8,0.8,"},
+      {"materials.csv", "thoracic_inlet_fascia,LAW1,"}};
+  for (const auto& [file, row] : cases) {
+    fs::path d = copy_geometry("inlet");
+    replace_in_file(d / file, row, "renamed_row" + row.substr(row.find(',')));
+    try {
+      load_geometry(d);
+      FAIL() << "no error without the row of " << file;
+    } catch (const SourceError& e) {
+      std::string w = e.what();
+      EXPECT_NE(w.find(file + ":"), std::string::npos) << w;
+      EXPECT_NE(w.find("'thoracic_inlet_fascia' is missing"), std::string::npos) << w;
+    }
+  }
+}
+
 TEST(GeometrySources, PelvicJointBandsWithoutAJointSpaceStopWithFileLine) {
   // The joint bands' modulus is scaled by band length / joint space: a blank or zero
   // joint_gap_mm would make it infinite, so it names file, line and field.

@@ -165,7 +165,7 @@ std::map<std::string, MaterialSpec> read_materials(const std::filesystem::path& 
   }
   for (const char* need : {"rib_cortical", "sternum_cortical", "costal_cartilage", "clavicle_cortical", "pelvis_cortical",
                            "pelvic_joint", "vertebra", "disc_thoracolumbar", "disc_cervical", "thoracic_organs",
-                           "abdominal_organs", "flesh", "muscle", "skin", "envelope"})
+                           "abdominal_organs", "flesh", "muscle", "skin", "envelope", "thoracic_inlet_fascia"})
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("material '") + need + "' is missing");
   return out;
 }
@@ -314,13 +314,14 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
       t.fail(r, "cortical_mm", "cortex thicker than half the section");
     out[t.text(r, "name")] = s;
   }
-  for (const char* need : {"sternum", "costal_cartilage", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope"})
+  for (const char* need : {"sternum", "costal_cartilage", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope",
+                           "thoracic_inlet_fascia"})
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("section '") + need + "' is missing");
   const ShellSection& cc = out["costal_cartilage"];
   if (cc.height <= 0 || cc.width <= 0) throw SourceError(file, cc.line, "height_mm", "costal cartilage needs height and width");
   if (out["pelvic_joints"].joint_gap <= 0)
     throw SourceError(file, out["pelvic_joints"].line, "joint_gap_mm", "the pelvic joint bands need the joint space they stand for (> 0)");
-  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope"})
+  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope", "thoracic_inlet_fascia"})
     if (out[need].total_thickness <= 0) throw SourceError(file, out[need].line, "total_thickness_mm", std::string(need) + " needs a thickness > 0");
   return out;
 }
@@ -382,10 +383,20 @@ std::map<std::string, double> read_disc_stiffness(const std::filesystem::path& f
 const VertebraLandmarks& GeometrySources::vertebra(const std::string& name) const {
   for (const auto& v : spine)
     if (v.name == name) return v;
-  throw std::out_of_range("no vertebra " + name);
+  throw SourceError(dir / "spine_landmarks.csv", 0, "level", "vertebra '" + name + "' is missing");
 }
-const MaterialSpec& GeometrySources::material(const std::string& name) const { return materials.at(name); }
-const JointSpec& GeometrySources::joint(const std::string& name) const { return joints.at(name); }
+// The readers require every name the mesher asks for; these lookups still name the file
+// (not a bare map::at) should a caller ask for one they do not require.
+const MaterialSpec& GeometrySources::material(const std::string& name) const {
+  auto it = materials.find(name);
+  if (it == materials.end()) throw SourceError(dir / "materials.csv", 0, "name", "material '" + name + "' is missing");
+  return it->second;
+}
+const JointSpec& GeometrySources::joint(const std::string& name) const {
+  auto it = joints.find(name);
+  if (it == joints.end()) throw SourceError(dir / "joints.csv", 0, "name", "joint '" + name + "' is missing");
+  return it->second;
+}
 
 GeometrySources load_geometry(const std::filesystem::path& dir) {
   GeometrySources g;
