@@ -6,7 +6,7 @@
 // 1000), and hbm-deckgen runs on it. Every run must write the model (0), stop on bad
 // input (1) or on a failed check (2): never a crash, an abort or a hang. A stopped run
 // names a file of the damaged geometry folder and leaves its output folder empty (outputs
-// appear complete or not at all). A throw-away version of this test (4,500 runs) found a
+// appear complete or not at all). A throw-away version of this test (about 5,000 runs) found a
 // missing section row stopping with a bare "map::at".
 #include <gtest/gtest.h>
 
