@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -134,11 +135,13 @@ TEST(EngineThreads, HubDeckTimeHistoriesAreBitwiseIdenticalWith1And2AndChosenThr
     EXPECT_TRUE(a == read_text(two / f)) << f << " differs between 1 and 2 threads";
     EXPECT_TRUE(a == read_text(chosen / f)) << f << " differs between 1 thread and the chosen count";
   }
-  // Contact has started: the impactor/skin normal force is not zero at the end.
+  // Contact has started: the impactor/skin normal force has risen above zero (the skin
+  // nodes it first meets are struck off and met again, so the force at one sample can be 0).
   const ThTable inter = read_th(one / (std::string(kCase) + "_TH_INTER_31003.csv"));
   ASSERT_FALSE(inter.rows.empty());
-  const double t_end = inter.column("time").back(), fn = inter.column("FN").back();
-  std::printf("impactor contact FN at %.3f ms: %.4g kN\n", t_end, fn);
+  const auto fns = inter.column("FN");
+  const double t_end = inter.column("time").back(), fn = *std::max_element(fns.begin(), fns.end());
+  std::printf("impactor contact FN, largest sample to %.3f ms: %.4g kN\n", t_end, fn);
   EXPECT_NEAR(t_end, kEndTime, 1e-9);
   EXPECT_GT(fn, 0.1);
 }

@@ -338,7 +338,10 @@ void Builder::build_torso() {
   const auto& skin_sec = g_.shell_sections.at("skin");
   for (const char* region : {"thorax", "abdomen", "pelvis"}) {
     std::string r = region;
-    flesh[r] = part("flesh_" + r, ElementKind::Brick, material("flesh"), r, "flesh");
+    // The trunk wall's flesh is mostly muscle; the seated pelvis's soft tissue, where the
+    // pelvis bears load (over the trochanters, under the ischia), is subcutaneous fat
+    // (materials.csv flesh, flesh_pelvis; calibration.md).
+    flesh[r] = part("flesh_" + r, ElementKind::Brick, material(r == "pelvis" ? "flesh_pelvis" : "flesh"), r, "flesh");
     skin[r] = part("skin_" + r, ElementKind::Shell, material("skin"), r, "skin", skin_sec.total_thickness);
     skin_tri[r] = part("skin_" + r + "_tria", ElementKind::Tria, material("skin"), r, "skin", skin_sec.total_thickness);
   }
