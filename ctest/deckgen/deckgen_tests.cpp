@@ -81,6 +81,12 @@ TEST(Table, MalformedNumberNamesFileLineAndField) {
   }
 }
 
+TEST(Table, WholeFileErrorNamesTheFileWithoutALine) {
+  EXPECT_EQ(std::string(SourceError("m.csv", 0, "name", "material 'x' is missing").what()), "m.csv: name: material 'x' is missing");
+  EXPECT_EQ(std::string(SourceError("s.stl", 0, "", "no triangle faces").what()), "s.stl: no triangle faces");
+  EXPECT_EQ(std::string(SourceError("m.csv", 7, "name", "bad").what()), "m.csv:7: name: bad");
+}
+
 TEST(Table, WrongFieldCountIsAnError) {
   EXPECT_THROW(Table::parse("a,b\n1,2,3\n", "t.csv"), SourceError);
 }

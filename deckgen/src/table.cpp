@@ -10,12 +10,26 @@
 
 namespace hbm::deckgen {
 
+namespace {
+
+// "file:line: field: message"; without the line for 0 (the file as a whole), without the
+// field when it is empty.
+std::string source_error_text(const std::string& file, int line, const std::string& field, const std::string& message) {
+  std::string s = file;
+  if (line > 0) {
+    s += ':';
+    s += std::to_string(line);
+  }
+  s += ": ";
+  if (!field.empty()) s += field + ": ";
+  return s + message;
+}
+
+}  // namespace
+
 SourceError::SourceError(const std::filesystem::path& file, int line, std::string field,
                          const std::string& message)
-    : std::runtime_error(file.string() + ":" + std::to_string(line) + ": " +
-                         (field.empty() ? std::string() : field + ": ") + message),
-      file_(file.string()),
-      line_(line) {}
+    : std::runtime_error(source_error_text(file.string(), line, field, message)), file_(file.string()), line_(line) {}
 
 namespace {
 

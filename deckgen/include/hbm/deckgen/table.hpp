@@ -12,7 +12,8 @@
 
 namespace hbm::deckgen {
 
-// An error in a geometry source: "file:line: field: message".
+// An error in a geometry source: "file:line: field: message"; line 0 (an error of the
+// file as a whole, such as a missing row or an unreadable surface) gives "file: field: message".
 class SourceError : public std::runtime_error {
  public:
   SourceError(const std::filesystem::path& file, int line, std::string field, const std::string& message);
