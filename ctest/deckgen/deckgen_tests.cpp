@@ -363,6 +363,68 @@ TEST(Model, GreaterTrochanterLiesUnderDeformableSoftTissue) {
   }
 }
 
+// Over the sternum the soft tissue is skin on subcutaneous fat (no muscle: the pectoralis
+// major arises beside the midline): every flesh tetra on the sternum's front is fat, and the
+// skin lies 12.7 +- 3.3 mm in front of the sternum (MDCT, 422 patients; Vojnosanit Pregl
+// 2019;76(2):186-191; torso_sections.csv).
+TEST(Model, SternumLiesUnderSkinAndSubcutaneousFat) {
+  const Built& b = model();
+  const int sternum = b.m.find_part("sternum"), presternal = b.m.find_part("flesh_presternal");
+  ASSERT_GE(sternum, 0);
+  ASSERT_GE(presternal, 0);
+  EXPECT_EQ(b.m.materials[static_cast<std::size_t>(b.m.parts[static_cast<std::size_t>(presternal)].material)].name, "subcutaneous_fat");
+  std::set<int> sternum_nodes;
+  for (std::size_t e = 0; e < b.m.trias.size(); ++e)
+    if (b.m.tria_part[e] == sternum) sternum_nodes.insert(b.m.trias[e].begin(), b.m.trias[e].end());
+  double y_half = 0, z_lo = 1e9, z_hi = -1e9;
+  for (int n : sternum_nodes) {
+    const Eigen::Vector3d& x = b.m.nodes[static_cast<std::size_t>(n)];
+    y_half = std::max(y_half, std::abs(x.y()));
+    z_lo = std::min(z_lo, x.z());
+    z_hi = std::max(z_hi, x.z());
+  }
+  // Flesh tetras resting on the sternum and lying in front of it (centroid ahead of their
+  // sternum nodes): all fat, and they are the whole presternal part.
+  int on_sternum = 0, in_part = 0;
+  for (std::size_t e = 0; e < b.m.tetras.size(); ++e) {
+    const int p = b.m.tetra_part[e];
+    if (p == presternal) ++in_part;
+    if (b.m.parts[static_cast<std::size_t>(p)].name.rfind("flesh_", 0) != 0) continue;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero(), s = Eigen::Vector3d::Zero();
+    int k = 0;
+    for (int n : b.m.tetras[e]) {
+      c += b.m.nodes[static_cast<std::size_t>(n)] / 4;
+      if (sternum_nodes.count(n)) {
+        s += b.m.nodes[static_cast<std::size_t>(n)];
+        ++k;
+      }
+    }
+    if (k == 0 || c.x() <= s.x() / k || std::abs(c.y()) >= y_half || c.z() <= z_lo || c.z() >= z_hi) continue;
+    ++on_sternum;
+    EXPECT_EQ(p, presternal) << "tetra " << e + 1 << " on the sternum's front is " << b.m.parts[static_cast<std::size_t>(p)].name;
+  }
+  EXPECT_GT(on_sternum, 0);
+  EXPECT_LE(on_sternum, in_part);
+  // Presternal thickness: the sternum's midline nodes to the thoracic skin.
+  std::vector<std::array<int, 4>> skin_faces;
+  for (std::size_t e = 0; e < b.m.shells.size(); ++e)
+    if (b.m.parts[static_cast<std::size_t>(b.m.shell_part[e])].name.rfind("skin_thorax", 0) == 0) skin_faces.push_back(b.m.shells[e]);
+  for (std::size_t e = 0; e < b.m.trias.size(); ++e)
+    if (b.m.parts[static_cast<std::size_t>(b.m.tria_part[e])].name.rfind("skin_thorax", 0) == 0) {
+      const auto& t = b.m.trias[e];
+      skin_faces.push_back({t[0], t[1], t[2], t[2]});
+    }
+  std::vector<Eigen::Vector3d> midline;
+  for (int n : sternum_nodes) {
+    const Eigen::Vector3d& x = b.m.nodes[static_cast<std::size_t>(n)];
+    if (std::abs(x.y()) < 1e-6 && x.z() > z_lo + 1e-6 && x.z() < z_hi - 1e-6) midline.push_back(x);
+  }
+  ASSERT_GE(midline.size(), 3u);
+  double mean = 0;
+  for (double d : distance_to_surface(triangulate(b.m.nodes, skin_faces), midline)) mean += d / static_cast<double>(midline.size());
+  EXPECT_NEAR(mean, 12.7, 3.3);
+}
+
 TEST(Model, ThighHoldsTheButtockBelowTheHipPlane) {
   // Zatsiorsky's thigh includes the buttock: torso-mesh mass below the hip plane is in the
   // femur segment, on the thigh side of the plane (pelvis axis normal, pointing up).

@@ -31,7 +31,7 @@ const FeModel& built_model() {
 }
 
 bool chest_wall(const std::string& part) {
-  return part == "flesh_thorax" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
+  return part == "flesh_thorax" || part == "flesh_presternal" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
 }
 
 // Nodes used by the elements of the parts `pick` selects.

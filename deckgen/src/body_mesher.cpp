@@ -37,6 +37,11 @@ namespace {
 // surface), est; torso nodes within it join the femur rigid body.
 constexpr double kTrochanterBone = 30.0;
 
+// The sternum spans the front cells of the T1 to T7 body layers (manubrium at the rib-1 band,
+// xiphisternal junction at the rib-7 band).
+constexpr const char* kSternumHighestBody = "T1";
+constexpr const char* kSternumLowestBody = "T7";
+
 // A point at the trochanter's bone: within kTrochanterBone of the landmark gt and not lateral
 // of it (the tissue lateral of the landmark stays deformable).
 bool at_trochanter_bone(const Eigen::Vector3d& x, const Eigen::Vector3d& gt) {
@@ -203,8 +208,12 @@ class Builder {
   Eigen::Vector3d moved(const std::string& link, const Eigen::Vector3d& p) const { return g_.skeleton.motion(link) * p; }
 
   void build_torso();
+  int layer_of_body(const std::string& vertebra) const;  // torso layer of that vertebral body
   bool is_tetra_flesh_cell(int r, int j) const;
-  void build_tetra_flesh(const std::map<std::string, int>& flesh, const std::map<std::string, int>& skin,
+  // A flesh cell over the sternum: the front angular cells 0 and N-1 (the sternum's own) of
+  // layers first_layer..last_layer within the sternum's span.
+  bool is_presternal_cell(int first_layer, int last_layer, int j) const;
+  void build_tetra_flesh(const std::map<std::string, int>& flesh, int presternal, const std::map<std::string, int>& skin,
                          const std::map<std::string, int>& skin_tri);
   void calibrate_disc(int layer, int part_index, double k_n_per_mm);
   void build_neck();
@@ -340,11 +349,14 @@ void Builder::build_torso() {
     std::string r = region;
     // The trunk wall's flesh is mostly muscle; the seated pelvis's soft tissue, where the
     // pelvis bears load (over the trochanters, under the ischia), is subcutaneous fat
-    // (materials.csv flesh, flesh_pelvis; calibration.md).
-    flesh[r] = part("flesh_" + r, ElementKind::Brick, material(r == "pelvis" ? "flesh_pelvis" : "flesh"), r, "flesh");
+    // (materials.csv flesh, subcutaneous_fat; calibration.md).
+    flesh[r] = part("flesh_" + r, ElementKind::Brick, material(r == "pelvis" ? "subcutaneous_fat" : "flesh"), r, "flesh");
     skin[r] = part("skin_" + r, ElementKind::Shell, material("skin"), r, "skin", skin_sec.total_thickness);
     skin_tri[r] = part("skin_" + r + "_tria", ElementKind::Tria, material("skin"), r, "skin", skin_sec.total_thickness);
   }
+  // Over the sternum there is no muscle: skin on subcutaneous fat on the bone (the pectoralis
+  // major arises beside the midline; CT: 11.3 mm of fat, 12.7 mm skin to cortex; calibration.md).
+  const int presternal = part("flesh_presternal", ElementKind::Brick, material("subcutaneous_fat"), "thorax", "flesh");
   // Organ sets: thoracic inside the rib cage (T1-T12 layers), abdominal below; one part per
   // (set, mass region).
   auto organ_part = [&](const LayerInfo& L) {
@@ -383,7 +395,10 @@ void Builder::build_torso() {
         auto h = torso_->ring_cell(l, r, j);
         torso_hexes_.push_back(h);  // the fine grid's volume: inside tests of the contacts and limbs
         if (o_.flesh_tetra && is_tetra_flesh_cell(r, j)) continue;  // meshed over the layer pairs below
-        int p = torso_->is_column_cell(r, j) ? column : r == 0 ? organ_part(L) : flesh.at(L.region);
+        int p = torso_->is_column_cell(r, j) ? column
+                : r == 0                     ? organ_part(L)
+                : is_presternal_cell(l, l, j) ? presternal
+                                              : flesh.at(L.region);
         brick(p, h);
         if (top) torso_top_faces_.push_back({h[4], h[5], h[6], h[7]});
       }
@@ -395,7 +410,7 @@ void Builder::build_torso() {
       }
     if (L.kind == LayerKind::Disc) calibrate_disc(l, column, g_.disc_stiffness.at(L.vertebra));
   }
-  if (o_.flesh_tetra) build_tetra_flesh(flesh, skin, skin_tri);
+  if (o_.flesh_tetra) build_tetra_flesh(flesh, presternal, skin, skin_tri);
   // Thoracic inlet: the suprapleural membrane (Sibson's fascia) over the top faces of the
   // organ block and organ ring at the top level, from the rib cage wall to the spinal
   // column (geometry/materials.csv). Without it the organ block extrudes upward through
@@ -466,7 +481,7 @@ bool Builder::is_tetra_flesh_cell(int r, int j) const {
   return r == 2 || (r == 1 && !torso_->is_column_cell(1, j));
 }
 
-void Builder::build_tetra_flesh(const std::map<std::string, int>& flesh, const std::map<std::string, int>& skin,
+void Builder::build_tetra_flesh(const std::map<std::string, int>& flesh, int presternal, const std::map<std::string, int>& skin,
                                 const std::map<std::string, int>& skin_tri) {
   const int N = torso_->n(), layers = torso_->levels() - 1;
   std::vector<std::pair<int, int>> pairs;  // first and last layer of each cell row
@@ -522,7 +537,7 @@ void Builder::build_tetra_flesh(const std::map<std::string, int>& flesh, const s
           throw std::runtime_error("torso flesh: tetra of zero volume in the cell of layers " + torso_->level(lb).name + " - " +
                                    torso_->level(lt).name + ", angular cell " + std::to_string(j) + " (torso_sections.csv)");
         m_.tetras.push_back(tn);
-        m_.tetra_part.push_back(flesh.at(L.region));
+        m_.tetra_part.push_back(is_presternal_cell(l0, l1, j) ? presternal : flesh.at(L.region));
       }
       if (lt + 1 == torso_->levels()) torso_top_faces_.push_back({h[4], h[5], h[6], h[7]});
       // The contacts on the skin take its shells as they are (a warped face's triangles):
@@ -556,13 +571,19 @@ void Builder::calibrate_disc(int l, int part_index, double k) {
 
 // --- rib cage -----------------------------------------------------------------------------
 
+int Builder::layer_of_body(const std::string& vertebra) const {
+  for (std::size_t l = 0; l < torso_layers_.size(); ++l)
+    if (torso_layers_[l].kind == LayerKind::Body && torso_layers_[l].vertebra == vertebra) return static_cast<int>(l);
+  throw std::logic_error("no body layer " + vertebra);
+}
+
+bool Builder::is_presternal_cell(int first_layer, int last_layer, int j) const {
+  const int N = torso_->n();
+  return (j == 0 || j == N - 1) && first_layer >= layer_of_body(kSternumLowestBody) && last_layer <= layer_of_body(kSternumHighestBody);
+}
+
 void Builder::build_ribcage() {
   const int N = torso_->n(), half = N / 2;
-  auto layer_of_body = [&](const std::string& vert) {
-    for (std::size_t l = 0; l < torso_layers_.size(); ++l)
-      if (torso_layers_[l].kind == LayerKind::Body && torso_layers_[l].vertebra == vert) return static_cast<int>(l);
-    throw std::logic_error("no body layer " + vert);
-  };
   auto P = [&](int n) { return m_.nodes[static_cast<std::size_t>(n)]; };
   // Split a wall quad (left/right mirrored diagonals) into two triangles.
   auto split = [&](int l, int j, bool left) {
@@ -669,7 +690,7 @@ void Builder::build_ribcage() {
   // Sternum: front cells from the rib-1 band to the rib-7 band.
   const auto [smi, teq] = sandwich_material("sternum", "sternum_cortical", "sternum");
   int sp = part("sternum", ElementKind::Tria, smi, "thorax", "sternum", teq);
-  int l1 = layer_of_body("T1"), l7 = layer_of_body("T7");
+  int l1 = layer_of_body(kSternumHighestBody), l7 = layer_of_body(kSternumLowestBody);
   for (int l = l7; l <= l1; ++l)
     for (int side = 0; side < 2; ++side) {
       bool left = side == 0;

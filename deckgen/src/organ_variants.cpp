@@ -12,9 +12,9 @@ namespace hbm::deckgen {
 namespace {
 
 // The chest wall the lungs slide on: ribs, costal cartilage, sternum and the thoracic
-// flesh (intercostal and pectoral muscle layer) the block shares nodes with.
+// flesh (intercostal and pectoral muscle layer, the presternal fat) the block shares nodes with.
 bool is_chest_wall(const std::string& part) {
-  return part == "flesh_thorax" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
+  return part == "flesh_thorax" || part == "flesh_presternal" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
 }
 
 int required_part(const FeModel& m, const std::string& name, const char* variant) {
