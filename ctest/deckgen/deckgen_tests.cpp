@@ -150,6 +150,27 @@ TEST(GeometrySources, MissingInletFasciaRowNamesFileAndRow) {
   }
 }
 
+TEST(GeometrySources, BadMediastinumRowNamesFileLineAndField) {
+  // thoracic_organs.csv: the mediastinum's half width and the vertebra its top lies at.
+  const struct {
+    std::string row, field;
+  } cases[] = {{"mediastinum,0.2,T4,", ":16: half_width_mm"},
+               {"mediastinum,31.55,L3,", ":16: top_vertebra"},
+               {"mediastinum,31.55,T44,", ":16: top_vertebra"},
+               {"heart,31.55,T4,", ":16: part"}};
+  for (const auto& c : cases) {
+    fs::path d = copy_geometry("mediastinum");
+    replace_in_file(d / "thoracic_organs.csv", "mediastinum,31.55,T4,", c.row);
+    try {
+      load_geometry(d);
+      FAIL() << "no error for the row " << c.row;
+    } catch (const SourceError& e) {
+      std::string w = e.what();
+      EXPECT_NE(w.find("thoracic_organs.csv" + c.field), std::string::npos) << w;
+    }
+  }
+}
+
 TEST(GeometrySources, PelvicJointBandsWithoutAJointSpaceStopWithFileLine) {
   // The joint bands' modulus is scaled by band length / joint space: a blank or zero
   // joint_gap_mm would make it infinite, so it names file, line and field.

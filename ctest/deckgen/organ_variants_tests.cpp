@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The thoracic organ block's anatomical variants (hbm-deckgen --pleura, --mediastinum;
-// organ_variants.hpp) on the model built from geometry/: what each moves, what it must
-// leave alone, and the mass it adds.
+// The thoracic organ block's parts and variants (organ_variants.hpp) on the model built from
+// geometry/: the water-like mediastinum the model has (thoracic_organs.csv) and its re-cut
+// (hbm-deckgen --mediastinum), the pleura (--pleura): what each moves, what it must leave
+// alone, the mass, and the lungs' bulk modulus from the air in them.
 #include "hbm/deckgen/geometry_sources.hpp"
 #include "hbm/deckgen/body_mesher.hpp"
 #include "hbm/deckgen/model_checks.hpp"
@@ -18,6 +19,11 @@
 using namespace hbm::deckgen;
 
 namespace {
+
+const GeometrySources& geometry() {
+  static const GeometrySources g = load_geometry(std::filesystem::path(HBM_SOURCE_DIR) / "geometry");
+  return g;
+}
 
 const FeModel& built_model() {
   static const FeModel m = [] {
@@ -60,13 +66,35 @@ double part_mass(const FeModel& m, int part) {
   return sum;
 }
 
+// Which block elements lie in the column of half width hw below z_top; checks the model's
+// parts against it and returns how many are in the mediastinum.
+std::size_t check_column(const FeModel& m, double hw, double z_top) {
+  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
+  std::size_t in_med = 0;
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    if (m.brick_part[e] != med && m.brick_part[e] != organs) continue;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : m.bricks[e]) c += m.nodes[static_cast<std::size_t>(n)] / 8;
+    const bool in = std::abs(c.y()) < hw && c.z() < z_top;
+    EXPECT_EQ(m.brick_part[e] == med, in) << "brick " << e + 1 << " at y " << c.y() << ", z " << c.z();
+    in_med += m.brick_part[e] == med ? 1 : 0;
+  }
+  return in_med;
+}
+
+// Volume of a part's solids (its mass over its density).
+double part_volume(const FeModel& m, int part) {
+  return part_mass(m, part) / m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part)].material)].rho;
+}
+
 }  // namespace
 
 TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) {
   FeModel m = built_model();
-  const int organs = m.find_part("thoracic_organs");
+  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
   ASSERT_GE(organs, 0);
-  auto is_organs = [&](int p) { return p == organs; };
+  ASSERT_GE(med, 0);
+  auto is_organs = [&](int p) { return p == organs || p == med; };  // the block: lungs and mediastinum
   auto is_wall = [&](int p) { return chest_wall(m.parts[static_cast<std::size_t>(p)].name); };
   auto is_other = [&](int p) { return !is_organs(p) && !is_wall(p); };
   const std::set<int> block_before = nodes_of(m, is_organs), wall_before = nodes_of(m, is_wall);
@@ -108,7 +136,7 @@ TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) 
   EXPECT_EQ(f.name, "pleura");
   EXPECT_EQ(f.type, 7);
   EXPECT_EQ(f.friction, 0.0);
-  EXPECT_EQ(f.main_parts, std::vector<int>{organs});
+  EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));
   EXPECT_EQ(f.secondary.size(), detached);
   for (int n : f.secondary) {
     EXPECT_TRUE(shared_with_wall.count(n));
@@ -116,44 +144,48 @@ TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) 
   }
   // Same elements, same places: the mass of the block is unchanged.
   EXPECT_NEAR(part_mass(m, organs), part_mass(before, organs), 1e-12);
+  EXPECT_NEAR(part_mass(m, med), part_mass(before, med), 1e-12);
 }
 
-TEST(OrganVariants, MediastinumIsTheWaterLikeBandWithinItsHalfWidth) {
-  FeModel m = built_model();
-  const int organs = m.find_part("thoracic_organs");
-  const int abdominal = m.find_material("abdominal_organs");
-  ASSERT_GE(organs, 0);
-  ASSERT_GE(abdominal, 0);
-  const double block_mass = part_mass(m, organs);
-  const double rho_air_filled = m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(organs)].material)].rho;
-  const double rho_water_like = m.materials[static_cast<std::size_t>(abdominal)].rho;
-  const double half_width = 25.0;
-
-  const std::size_t moved = add_mediastinum(m, half_width);
-
+TEST(OrganVariants, MediastinumIsTheSourcesWaterLikeColumn) {
+  const FeModel& m = built_model();
+  const GeometrySources& g = geometry();
   const int med = m.find_part("mediastinum");
   ASSERT_GE(med, 0);
-  EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].material, abdominal);
+  EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].material, m.find_material("abdominal_organs"));
   EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].segment, "thorax");
-  std::size_t in_med = 0;
-  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
-    if (m.brick_part[e] != med && m.brick_part[e] != organs) continue;
-    double y = 0;
-    for (int n : m.bricks[e]) y += m.nodes[static_cast<std::size_t>(n)].y();
-    y /= 8;
-    if (m.brick_part[e] == med) {
-      ++in_med;
-      EXPECT_LT(std::abs(y), half_width);
-    } else {
-      EXPECT_GE(std::abs(y), half_width);
-    }
-  }
-  EXPECT_EQ(in_med, moved);
-  EXPECT_GT(moved, 0u);
-  // The band's volume V now weighs rho_water V instead of rho_air-filled V.
-  const double band_volume = part_mass(m, med) / rho_water_like;
-  EXPECT_NEAR(part_mass(m, organs) + part_mass(m, med), block_mass + band_volume * (rho_water_like - rho_air_filled),
-              1e-9 * block_mass);
+  // Gleeson 2001's mean width 63.1 mm, from the T4 upper endplate down (thoracic_organs.csv).
+  EXPECT_DOUBLE_EQ(g.mediastinum.half_width, 31.55);
+  EXPECT_GT(check_column(m, g.mediastinum.half_width, g.vertebra(g.mediastinum.top_vertebra).upper.y()), 0u);
+}
+
+// The air-filled lungs' bulk modulus is that of their air with the glottis closed (adiabatic:
+// K = gamma p0 / phi_air) for 3 l of functional residual capacity in a 6 l thoracic cavity
+// less the mesh's mediastinum (materials.csv): a wider column leaves less lung for the air.
+TEST(OrganVariants, LungBulkModulusIsTheirAirsWithTheGlottisClosed) {
+  const FeModel& m = built_model();
+  const double v_med = part_volume(m, m.find_part("mediastinum"));  // mm^3
+  const double phi_air = 3.0e6 / (6.0e6 - v_med);
+  const double k_air_gpa = 1.4 * 0.101325 / phi_air * 1e-3;
+  const FeMaterial& lungs = m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(m.find_part("thoracic_organs"))].material)];
+  EXPECT_NEAR(lungs.K, k_air_gpa, 0.05 * k_air_gpa) << "mediastinum " << v_med * 1e-6 << " l";
+}
+
+TEST(OrganVariants, MediastinumRecutKeepsTheBlock) {
+  FeModel m = built_model();
+  const GeometrySources& g = geometry();
+  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
+  const double z_top = g.vertebra(g.mediastinum.top_vertebra).upper.y();
+  const double block_volume = part_volume(m, organs) + part_volume(m, med);
+  const std::size_t parts_before = m.parts.size(), in_before = check_column(m, g.mediastinum.half_width, z_top);
+
+  const std::size_t in_after = add_mediastinum(m, 25.0, z_top);
+
+  EXPECT_EQ(m.parts.size(), parts_before);  // the same part, re-cut
+  EXPECT_EQ(m.find_part("mediastinum"), med);
+  EXPECT_EQ(check_column(m, 25.0, z_top), in_after);
+  EXPECT_LT(in_after, in_before);
+  EXPECT_NEAR(part_volume(m, organs) + part_volume(m, med), block_volume, 1e-9 * block_volume);
 }
 
 TEST(OrganVariants, BadHalfWidthAndMissingPartsAreErrors) {
@@ -172,10 +204,9 @@ TEST(OrganVariants, BadHalfWidthAndMissingPartsAreErrors) {
 
 TEST(OrganVariants, MediastinumSlidesWithTheBlockUnderThePleura) {
   FeModel m = built_model();
-  const int organs = m.find_part("thoracic_organs");
+  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
   const std::size_t detached = add_pleura(m);
-  add_mediastinum(m, 25.0);
-  const int med = m.find_part("mediastinum");
+  add_mediastinum(m, 25.0);  // a re-cut under the pleura keeps the contact's parts
   const FeInterface& f = m.interfaces.back();
   ASSERT_EQ(f.name, "pleura");
   EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));

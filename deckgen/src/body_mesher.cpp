@@ -5,6 +5,7 @@
 // and pelvis are shells on the inner-wall ring sharing the hexahedra nodes (as in the
 // seed model); head and limbs are shell envelopes in rigid bodies.
 #include "hbm/deckgen/body_mesher.hpp"
+#include "hbm/deckgen/organ_variants.hpp"
 #include "hbm/deckgen/rib_fracture.hpp"
 
 #include "hbm/deckgen/surface_tools.hpp"
@@ -1301,7 +1302,12 @@ FeModel Builder::run(ModelLandmarks* lm) {
 
 FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks) {
   Builder b(g, opt);
-  return b.run(landmarks);
+  FeModel m = b.run(landmarks);
+  // The organ block's water-like mediastinum (thoracic_organs.csv): from the diaphragm up to
+  // the top vertebra's upper endplate.
+  const double half_width = opt.mediastinum_half_width > 0 ? opt.mediastinum_half_width : g.mediastinum.half_width;
+  add_mediastinum(m, half_width, g.vertebra(g.mediastinum.top_vertebra).upper.y());
+  return m;
 }
 
 }  // namespace hbm::deckgen

@@ -378,6 +378,25 @@ std::map<std::string, double> read_disc_stiffness(const std::filesystem::path& f
   return out;
 }
 
+MediastinumSpec read_thoracic_organs(const std::filesystem::path& file, const std::vector<VertebraLandmarks>& spine) {
+  Table t = Table::read(file);
+  MediastinumSpec m;
+  for (const auto& r : t.rows()) {
+    const std::string part = t.text(r, "part");
+    if (part != "mediastinum") t.fail(r, "part", "unknown part '" + part + "' (expected mediastinum)");
+    if (m.line) t.fail(r, "part", "duplicate part 'mediastinum'");
+    m.line = r.line;
+    m.half_width = t.number_in(r, "half_width_mm", 1, 150);
+    m.top_vertebra = t.text(r, "top_vertebra");
+    const bool thoracic = std::any_of(spine.begin(), spine.end(), [&](const VertebraLandmarks& v) { return v.name == m.top_vertebra; }) &&
+                          m.top_vertebra.size() > 1 && m.top_vertebra[0] == 'T';
+    if (!thoracic) t.fail(r, "top_vertebra", "'" + m.top_vertebra + "' is not a thoracic vertebra of spine_landmarks.csv");
+    if (t.text(r, "source").empty()) t.fail(r, "source", "the mediastinum needs its source");
+  }
+  if (!m.line) throw SourceError(file, 0, "part", "part 'mediastinum' is missing");
+  return m;
+}
+
 }  // namespace
 
 const VertebraLandmarks& GeometrySources::vertebra(const std::string& name) const {
@@ -415,6 +434,7 @@ GeometrySources load_geometry(const std::filesystem::path& dir) {
   g.shell_sections = read_shell_sections(dir / "shell_sections.csv");
   g.disc_stiffness = read_disc_stiffness(dir / "disc_stiffness.csv");
   g.rib_bone = read_rib_fracture(dir / "rib_fracture.csv", g.material("rib_cortical").e_or_k);
+  g.mediastinum = read_thoracic_organs(dir / "thoracic_organs.csv", g.spine);
   g.skeleton = Skeleton::read(dir / "skeleton.urdf");
   return g;
 }

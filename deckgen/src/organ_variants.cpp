@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -34,13 +36,15 @@ void for_each_solid(FeModel& m, F&& f) {
 
 std::size_t add_pleura(FeModel& m) {
   const int organs = required_part(m, "thoracic_organs", "pleura");
+  const int mediastinum = m.find_part("mediastinum");  // part of the block where the model has it
+  auto in_block = [&](int part) { return part == organs || (mediastinum >= 0 && part == mediastinum); };
   // What holds each node: kBlock the organ block, kWall the chest wall, kOther anything else
   // (elements of other parts, springs, rigid bodies). Contact interfaces do not hold a node:
   // the wall keeps the original, and the interfaces on it (clavicle on the rib cage) with it.
   enum : unsigned char { kBlock = 1, kWall = 2, kOther = 4 };
   std::vector<unsigned char> held(m.nodes.size(), 0);
   auto flag_of = [&](int part) -> unsigned char {
-    if (part == organs) return kBlock;
+    if (in_block(part)) return kBlock;
     return is_chest_wall(m.parts[static_cast<std::size_t>(part)].name) ? kWall : kOther;
   };
   auto mark = [&](const auto& elements, const std::vector<int>& part_of) {
@@ -67,7 +71,7 @@ std::size_t add_pleura(FeModel& m) {
     }
   if (wall_nodes.empty()) throw std::invalid_argument("pleura: the organ block shares no node with the chest wall alone");
   for_each_solid(m, [&](auto& nodes, int part) {
-    if (part != organs) return;
+    if (!in_block(part)) return;
     for (int& n : nodes)
       if (copy_of[static_cast<std::size_t>(n)] >= 0) n = copy_of[static_cast<std::size_t>(n)];
   });
@@ -77,6 +81,7 @@ std::size_t add_pleura(FeModel& m) {
   f.name = "pleura";
   f.secondary = std::move(wall_nodes);
   f.main_parts = {organs};
+  if (mediastinum >= 0) f.main_parts.push_back(mediastinum);
   // The wall nodes start on the block's faces: a 0.5 mm gap (Inacti 6 lets the solver take
   // the initial overlap out gently) and no friction (the pleural fluid).
   f.gap = 0.5;
@@ -88,7 +93,7 @@ std::size_t add_pleura(FeModel& m) {
   return m.interfaces.back().secondary.size();
 }
 
-std::size_t add_mediastinum(FeModel& m, double half_width) {
+std::size_t add_mediastinum(FeModel& m, double half_width, double z_top) {
   std::ostringstream hw;
   hw << half_width;
   if (!(half_width > 0) || !std::isfinite(half_width))
@@ -96,30 +101,43 @@ std::size_t add_mediastinum(FeModel& m, double half_width) {
   const int organs = required_part(m, "thoracic_organs", "mediastinum");
   const int material = m.find_material("abdominal_organs");
   if (material < 0) throw std::invalid_argument("mediastinum: the model has no material abdominal_organs");
-  // The band's elements (their part entries), found before the model changes: an error
-  // leaves it as it was.
-  std::vector<int*> band;
+  const int existing = m.find_part("mediastinum");
+  // The block's elements (their part entries) and whether each lies in the column, found
+  // before the model changes: an error leaves it as it was. A model that has a mediastinum
+  // already is re-cut (the block is the thoracic organs and the old column together).
+  std::vector<std::pair<int*, bool>> block;
+  std::size_t inside = 0;
   for_each_solid(m, [&](const auto& nodes, int& part) {
-    if (part != organs) return;
-    double y = 0;
-    for (int n : nodes) y += m.nodes[static_cast<std::size_t>(n)].y();
-    if (std::abs(y / static_cast<double>(nodes.size())) < half_width) band.push_back(&part);
+    if (part != organs && (existing < 0 || part != existing)) return;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : nodes) c += m.nodes[static_cast<std::size_t>(n)];
+    c /= static_cast<double>(nodes.size());
+    const bool in = std::abs(c.y()) < half_width && c.z() < z_top;
+    block.push_back({&part, in});
+    inside += in ? 1 : 0;
   });
-  if (band.empty())
+  if (inside == 0)
     throw std::invalid_argument("mediastinum: no thoracic organ element has its centroid within " + hw.str() +
-                                " mm of the mid-plane");
-  FePart p = m.parts[static_cast<std::size_t>(organs)];
-  p.name = "mediastinum";
-  p.material = material;
-  const int mediastinum = m.add_part(p);  // grows m.parts only: the part entries stay valid
-  for (int* part : band) *part = mediastinum;
-  const std::size_t moved = band.size();
-  // Under a pleura the band slides on the wall with the rest of the block.
+                                " mm of the mid-plane and below z = " + std::to_string(z_top) + " mm");
+  int mediastinum = existing;
+  if (mediastinum < 0) {
+    FePart p = m.parts[static_cast<std::size_t>(organs)];
+    p.name = "mediastinum";
+    p.material = material;
+    mediastinum = m.add_part(p);  // grows m.parts only: the part entries stay valid
+  }
+  for (auto& [part, in] : block) *part = in ? mediastinum : organs;
+  // Under a pleura the column slides on the wall with the rest of the block.
   for (FeInterface& f : m.interfaces)
-    if (std::find(f.main_parts.begin(), f.main_parts.end(), organs) != f.main_parts.end()) f.main_parts.push_back(mediastinum);
-  m.notes.push_back("mediastinum: " + std::to_string(moved) + " thoracic organ elements within " + hw.str() +
-                    " mm of the mid-plane take the abdominal organ set (hbm-deckgen --mediastinum)");
-  return moved;
+    if (std::find(f.main_parts.begin(), f.main_parts.end(), organs) != f.main_parts.end() &&
+        std::find(f.main_parts.begin(), f.main_parts.end(), mediastinum) == f.main_parts.end())
+      f.main_parts.push_back(mediastinum);
+  std::ostringstream note;
+  note << "mediastinum: " << inside << " thoracic organ elements within " << hw.str() << " mm of the mid-plane";
+  if (std::isfinite(z_top)) note << " and below z = " << std::fixed << std::setprecision(1) << z_top << " mm";
+  note << " take the abdominal organ set (water-like)";
+  m.notes.push_back(note.str());
+  return inside;
 }
 
 }  // namespace hbm::deckgen

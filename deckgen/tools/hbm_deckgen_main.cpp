@@ -47,8 +47,8 @@ int main(int argc, char** argv) {
                "variant: the thoracic organ block slides on the chest wall (frictionless contact; default: shared nodes)");
   double mediastinum = 0;
   app.add_option("--mediastinum", mediastinum,
-                 "HALF_WIDTH (mm), variant: the thoracic organ block within HALF_WIDTH of the mid-plane is water-like "
-                 "(abdominal organ set; default: all air-filled)");
+                 "HALF_WIDTH (mm): the water-like mediastinum of the thoracic organ block this wide each side of the "
+                 "mid-plane (default: thoracic_organs.csv, 31.55 mm)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -80,6 +80,14 @@ int main(int argc, char** argv) {
     }
     dg::MesherOptions o;
     o.flesh_tetra = !flesh_bricks;
+    if (app.count("--mediastinum")) {
+      if (!(mediastinum > 0) || !std::isfinite(mediastinum)) {
+        std::ostringstream msg;
+        msg << "--mediastinum: the half width must be a positive number of mm (got " << mediastinum << ")";
+        throw std::invalid_argument(msg.str());
+      }
+      o.mediastinum_half_width = mediastinum;
+    }
     if (app.count("--rib-fracture")) {
       const auto& b = g.rib_bone;
       if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max)) {
@@ -98,7 +106,6 @@ int main(int argc, char** argv) {
       m.notes.push_back("rib fracture model: elastoplastic ribs deleted at the median failure strain at " +
                         std::to_string(std::lround(o.rib_fracture_age)) + " years (--rib-fracture)");
     if (pleura) dg::add_pleura(m);
-    if (app.count("--mediastinum")) dg::add_mediastinum(m, mediastinum);
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";
     bool ok = dg::print_budget(std::cout, dg::element_budget(m), 10000, 12000);

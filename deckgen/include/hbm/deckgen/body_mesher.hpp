@@ -30,6 +30,9 @@ struct MesherOptions {
   // Rib fracture model (rib_fracture.hpp): elastoplastic rib strips deleted at the failure
   // strain of a subject of this age [years]; < 0: elastic ribs (the default model).
   double rib_fracture_age = -1;
+  // Half width (mm) of the water-like mediastinum in the thoracic organ block; <= 0: the
+  // source's (thoracic_organs.csv).
+  double mediastinum_half_width = -1;
 };
 
 // Landmarks of the built model used by the checks (region boundaries for the trunk CoG).

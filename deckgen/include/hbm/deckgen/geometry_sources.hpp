@@ -98,6 +98,13 @@ struct ShellSection {
   int line = 0;
 };
 
+// The water-like mediastinum inside the thoracic organ block (thoracic_organs.csv).
+struct MediastinumSpec {
+  double half_width = 0;     // mm from the mid-plane
+  std::string top_vertebra;  // the column starts below this vertebra's upper endplate
+  int line = 0;
+};
+
 struct GeometrySources {
   std::filesystem::path dir;
   std::vector<VertebraLandmarks> spine;   // C1..S1 top to bottom
@@ -113,6 +120,7 @@ struct GeometrySources {
   std::map<std::string, ShellSection> shell_sections;
   std::map<std::string, double> disc_stiffness;  // N/mm, by disc name (T1T2 ... L5S1)
   RibBoneFailure rib_bone;                        // rib_fracture.csv (E: materials.csv rib_cortical)
+  MediastinumSpec mediastinum;                    // thoracic_organs.csv
   Skeleton skeleton;
 
   const VertebraLandmarks& vertebra(const std::string& name) const;

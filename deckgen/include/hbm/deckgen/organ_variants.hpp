@@ -1,24 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Anatomical variants of the thoracic organ block, for calibration studies (issue 8;
-// geometry/calibration-notes-validation.md, "Tissue viscosity, a pleura and the presternal
-// tissue against the two frontal speeds"). The default model follows the seed: one
-// undifferentiated, air-filled organ block sharing every node with the rib cage and the
-// thoracic flesh. Neither variant is the default; each is a post-pass on the built model.
-//  - Pleura: the lungs slide on the chest wall. The organ block's nodes that it shares
-//    only with the wall (ribs, costal cartilage, sternum, thoracic flesh) are duplicated,
-//    the block takes the copies, and a frictionless /INTER/TYPE7 holds the wall nodes on the
-//    block's surface (the pleural cavity holds a few ml of lubricating fluid). Nodes the block
-//    shares with anything else (spine, discs, abdominal organs, inlet fascia, springs, rigid
-//    bodies) stay shared: the lungs hang from the hilum and the mediastinum. Contact
-//    interfaces on wall nodes stay with the wall.
-//  - Mediastinum: the block between the lungs (heart, great vessels, blood, oesophagus) is
-//    water-like, not air-filled: the organ bricks whose centroid lies within a half width of
-//    the mid-plane (y = 0) become a part `mediastinum` with the abdominal organ set
-//    (1060 kg/m^3, the liver's bulk modulus). Applied after the pleura, the band slides on
-//    the wall with the rest of the block (it joins the pleura's main surface).
+// The thoracic organ block's parts and its anatomical variants (issue 8;
+// geometry/calibration-notes-validation.md). The block shares every node with the rib cage,
+// the spine and the thoracic flesh, as in the seed.
+//  - Mediastinum (in the default model since 2026-11-25, thoracic_organs.csv): the column
+//    between the two pleural sacs (heart, great vessels, blood, oesophagus) is water-like,
+//    not air-filled: the organ bricks whose centroid lies within a half width of the
+//    mid-plane (y = 0) and below a height become a part `mediastinum` with the abdominal
+//    organ set (1060 kg/m^3, the liver's bulk modulus); the rest of the block is the lungs
+//    (materials.csv thoracic_organs). build_body_model cuts it with the source's width;
+//    hbm-deckgen --mediastinum W re-cuts it with another width (calibration studies).
+//  - Pleura (variant, not the default): the lungs slide on the chest wall. The block's
+//    nodes that it shares only with the wall (ribs, costal cartilage, sternum, thoracic
+//    flesh) are duplicated, the block (with the mediastinum) takes the copies, and a
+//    frictionless /INTER/TYPE7 holds the wall nodes on the block's surface (the pleural
+//    cavity holds a few ml of lubricating fluid). Nodes the block shares with anything else
+//    (spine, discs, abdominal organs, inlet fascia, springs, rigid bodies) stay shared: the
+//    lungs hang from the hilum and the mediastinum. Contact interfaces on wall nodes stay
+//    with the wall.
 #pragma once
 
 #include "hbm/deckgen/fe_model.hpp"
+
+#include <limits>
 
 namespace hbm::deckgen {
 
@@ -27,9 +30,11 @@ namespace hbm::deckgen {
 // Throws std::invalid_argument if the model has no part `thoracic_organs`.
 std::size_t add_pleura(FeModel& m);
 
-// Moves the thoracic organ elements whose centroid has |y| < half_width (mm) to a new part
-// `mediastinum` with the material `abdominal_organs`; returns how many moved. Throws
-// std::invalid_argument for a half width <= 0 or a model without those part and material.
-std::size_t add_mediastinum(FeModel& m, double half_width);
+// Puts the thoracic organ elements whose centroid has |y| < half_width and z < z_top (mm) in
+// the part `mediastinum` (made with the material `abdominal_organs` if the model has none;
+// an existing one is re-cut: its elements outside go back to thoracic_organs); returns how
+// many are in it. Throws std::invalid_argument for a half width <= 0, an empty column or a
+// model without those part and material.
+std::size_t add_mediastinum(FeModel& m, double half_width, double z_top = std::numeric_limits<double>::infinity());
 
 }  // namespace hbm::deckgen
