@@ -154,10 +154,10 @@ TEST(GeometrySources, BadMediastinumRowNamesFileLineAndField) {
   // thoracic_organs.csv: the mediastinum's half width and the vertebra its top lies at.
   const struct {
     std::string row, field;
-  } cases[] = {{"mediastinum,0.2,T4,", ":16: half_width_mm"},
-               {"mediastinum,31.55,L3,", ":16: top_vertebra"},
-               {"mediastinum,31.55,T44,", ":16: top_vertebra"},
-               {"heart,31.55,T4,", ":16: part"}};
+  } cases[] = {{"mediastinum,0.2,T4,", ":17: half_width_mm"},
+               {"mediastinum,31.55,L3,", ":17: top_vertebra"},
+               {"mediastinum,31.55,T44,", ":17: top_vertebra"},
+               {"heart,31.55,T4,", ":17: part"}};
   for (const auto& c : cases) {
     fs::path d = copy_geometry("mediastinum");
     replace_in_file(d / "thoracic_organs.csv", "mediastinum,31.55,T4,", c.row);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The thoracic organ block's parts and variants (organ_variants.hpp) on the model built from
-// geometry/: the water-like mediastinum the model has (thoracic_organs.csv) and its re-cut
-// (hbm-deckgen --mediastinum), the pleura (--pleura): what each moves, what it must leave
+// The thoracic organ block's anatomical variants (organ_variants.hpp) on the model built from
+// geometry/: the pleura (hbm-deckgen --pleura), a water-like band (--mediastinum), the lungs
+// and the mediastinum of thoracic_organs.csv (--lungs): what each moves, what it must leave
 // alone, the mass, and the lungs' bulk modulus from the air in them.
 #include "hbm/deckgen/geometry_sources.hpp"
 #include "hbm/deckgen/body_mesher.hpp"
@@ -31,6 +31,19 @@ const FeModel& built_model() {
     ModelLandmarks lm;
     FeModel x = build_body_model(g, MesherOptions{}, &lm);
     assign_rigid_body_masses(x, g, lm);
+    return x;
+  }();
+  return m;
+}
+
+// The model with MesherOptions::lungs (hbm-deckgen --lungs).
+const FeModel& lungs_model() {
+  static const FeModel m = [] {
+    MesherOptions o;
+    o.lungs = true;
+    ModelLandmarks lm;
+    FeModel x = build_body_model(geometry(), o, &lm);
+    assign_rigid_body_masses(x, geometry(), lm);
     return x;
   }();
   return m;
@@ -91,10 +104,10 @@ double part_volume(const FeModel& m, int part) {
 
 TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) {
   FeModel m = built_model();
-  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
+  const int organs = m.find_part("thoracic_organs");
   ASSERT_GE(organs, 0);
-  ASSERT_GE(med, 0);
-  auto is_organs = [&](int p) { return p == organs || p == med; };  // the block: lungs and mediastinum
+  ASSERT_LT(m.find_part("mediastinum"), 0);  // the seed's undifferentiated block
+  auto is_organs = [&](int p) { return p == organs; };
   auto is_wall = [&](int p) { return chest_wall(m.parts[static_cast<std::size_t>(p)].name); };
   auto is_other = [&](int p) { return !is_organs(p) && !is_wall(p); };
   const std::set<int> block_before = nodes_of(m, is_organs), wall_before = nodes_of(m, is_wall);
@@ -136,7 +149,7 @@ TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) 
   EXPECT_EQ(f.name, "pleura");
   EXPECT_EQ(f.type, 7);
   EXPECT_EQ(f.friction, 0.0);
-  EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));
+  EXPECT_EQ(f.main_parts, std::vector<int>{organs});
   EXPECT_EQ(f.secondary.size(), detached);
   for (int n : f.secondary) {
     EXPECT_TRUE(shared_with_wall.count(n));
@@ -144,35 +157,73 @@ TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) 
   }
   // Same elements, same places: the mass of the block is unchanged.
   EXPECT_NEAR(part_mass(m, organs), part_mass(before, organs), 1e-12);
-  EXPECT_NEAR(part_mass(m, med), part_mass(before, med), 1e-12);
 }
 
-TEST(OrganVariants, MediastinumIsTheSourcesWaterLikeColumn) {
-  const FeModel& m = built_model();
+TEST(OrganVariants, MediastinumIsTheWaterLikeBandWithinItsHalfWidth) {
+  FeModel m = built_model();
+  const int organs = m.find_part("thoracic_organs");
+  const int abdominal = m.find_material("abdominal_organs");
+  ASSERT_GE(organs, 0);
+  ASSERT_GE(abdominal, 0);
+  const double block_mass = part_mass(m, organs);
+  const double rho_air_filled = m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(organs)].material)].rho;
+  const double rho_water_like = m.materials[static_cast<std::size_t>(abdominal)].rho;
+  const double half_width = 25.0;
+
+  const std::size_t moved = add_mediastinum(m, half_width);
+
+  const int med = m.find_part("mediastinum");
+  ASSERT_GE(med, 0);
+  EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].material, abdominal);
+  EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].segment, "thorax");
+  std::size_t in_med = 0;
+  for (std::size_t e = 0; e < m.bricks.size(); ++e) {
+    if (m.brick_part[e] != med && m.brick_part[e] != organs) continue;
+    double y = 0;
+    for (int n : m.bricks[e]) y += m.nodes[static_cast<std::size_t>(n)].y();
+    y /= 8;
+    if (m.brick_part[e] == med) {
+      ++in_med;
+      EXPECT_LT(std::abs(y), half_width);
+    } else {
+      EXPECT_GE(std::abs(y), half_width);
+    }
+  }
+  EXPECT_EQ(in_med, moved);
+  EXPECT_GT(moved, 0u);
+  // The band's volume V now weighs rho_water V instead of rho_air-filled V.
+  const double band_volume = part_mass(m, med) / rho_water_like;
+  EXPECT_NEAR(part_mass(m, organs) + part_mass(m, med), block_mass + band_volume * (rho_water_like - rho_air_filled),
+              1e-9 * block_mass);
+}
+
+TEST(OrganVariants, LungsVariantCutsTheSourcesWaterLikeMediastinum) {
+  const FeModel& m = lungs_model();
   const GeometrySources& g = geometry();
   const int med = m.find_part("mediastinum");
   ASSERT_GE(med, 0);
   EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].material, m.find_material("abdominal_organs"));
   EXPECT_EQ(m.parts[static_cast<std::size_t>(med)].segment, "thorax");
+  EXPECT_EQ(m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(m.find_part("thoracic_organs"))].material)].name, "lungs");
   // Gleeson 2001's mean width 63.1 mm, from the T4 upper endplate down (thoracic_organs.csv).
   EXPECT_DOUBLE_EQ(g.mediastinum.half_width, 31.55);
   EXPECT_GT(check_column(m, g.mediastinum.half_width, g.vertebra(g.mediastinum.top_vertebra).upper.y()), 0u);
 }
 
 // The air-filled lungs' bulk modulus is that of their air with the glottis closed (adiabatic:
-// K = gamma p0 / phi_air) for 3 l of functional residual capacity in a 6 l thoracic cavity
-// less the mesh's mediastinum (materials.csv): a wider column leaves less lung for the air.
+// K = gamma p0 / phi_air) for 3 l of functional residual capacity in the mesh's lungs, the
+// organ block less its mediastinum (materials.csv): a wider column leaves less lung for the air.
 TEST(OrganVariants, LungBulkModulusIsTheirAirsWithTheGlottisClosed) {
-  const FeModel& m = built_model();
-  const double v_med = part_volume(m, m.find_part("mediastinum"));  // mm^3
-  const double phi_air = 3.0e6 / (6.0e6 - v_med);
+  const FeModel& m = lungs_model();
+  const double v_lungs = part_volume(m, m.find_part("thoracic_organs"));  // mm^3
+  const double phi_air = 3.0e6 / v_lungs;
   const double k_air_gpa = 1.4 * 0.101325 / phi_air * 1e-3;
   const FeMaterial& lungs = m.materials[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(m.find_part("thoracic_organs"))].material)];
-  EXPECT_NEAR(lungs.K, k_air_gpa, 0.05 * k_air_gpa) << "mediastinum " << v_med * 1e-6 << " l";
+  EXPECT_NEAR(lungs.K, k_air_gpa, 0.02 * k_air_gpa) << "lungs " << v_lungs * 1e-6 << " l";
 }
 
 TEST(OrganVariants, MediastinumRecutKeepsTheBlock) {
-  FeModel m = built_model();
+  FeModel m = lungs_model();
   const GeometrySources& g = geometry();
   const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
   const double z_top = g.vertebra(g.mediastinum.top_vertebra).upper.y();
@@ -203,12 +254,24 @@ TEST(OrganVariants, BadHalfWidthAndMissingPartsAreErrors) {
 }
 
 TEST(OrganVariants, MediastinumSlidesWithTheBlockUnderThePleura) {
-  FeModel m = built_model();
-  const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
-  const std::size_t detached = add_pleura(m);
-  add_mediastinum(m, 25.0);  // a re-cut under the pleura keeps the contact's parts
-  const FeInterface& f = m.interfaces.back();
-  ASSERT_EQ(f.name, "pleura");
-  EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));
-  EXPECT_EQ(f.secondary.size(), detached);
+  {  // a band cut after the pleura joins its contact
+    FeModel m = built_model();
+    const int organs = m.find_part("thoracic_organs");
+    const std::size_t detached = add_pleura(m);
+    add_mediastinum(m, 25.0);
+    const int med = m.find_part("mediastinum");
+    const FeInterface& f = m.interfaces.back();
+    ASSERT_EQ(f.name, "pleura");
+    EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));
+    EXPECT_EQ(f.secondary.size(), detached);
+  }
+  {  // the lungs' mediastinum is part of the block the pleura detaches, and a re-cut keeps it so
+    FeModel m = lungs_model();
+    const int organs = m.find_part("thoracic_organs"), med = m.find_part("mediastinum");
+    add_pleura(m);
+    add_mediastinum(m, 25.0);
+    const FeInterface& f = m.interfaces.back();
+    ASSERT_EQ(f.name, "pleura");
+    EXPECT_EQ(f.main_parts, (std::vector<int>{organs, med}));
+  }
 }

@@ -164,7 +164,7 @@ std::map<std::string, MaterialSpec> read_materials(const std::filesystem::path& 
     out[m.name] = m;
   }
   for (const char* need : {"rib_cortical", "sternum_cortical", "costal_cartilage", "clavicle_cortical", "pelvis_cortical",
-                           "pelvic_joint", "vertebra", "disc_thoracolumbar", "disc_cervical", "thoracic_organs",
+                           "pelvic_joint", "vertebra", "disc_thoracolumbar", "disc_cervical", "thoracic_organs", "lungs",
                            "abdominal_organs", "flesh", "subcutaneous_fat", "muscle", "skin", "envelope", "thoracic_inlet_fascia"})
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("material '") + need + "' is missing");
   return out;

@@ -30,8 +30,10 @@ struct MesherOptions {
   // Rib fracture model (rib_fracture.hpp): elastoplastic rib strips deleted at the failure
   // strain of a subject of this age [years]; < 0: elastic ribs (the default model).
   double rib_fracture_age = -1;
-  // Half width (mm) of the water-like mediastinum in the thoracic organ block; <= 0: the
-  // source's (thoracic_organs.csv).
+  // Variant (organ_variants.hpp): the thoracic organ block as the lungs (materials.csv
+  // lungs) and a water-like mediastinum (thoracic_organs.csv) instead of the seed's
+  // undifferentiated, air-filled block; the mediastinum's half width (mm), <= 0: the source's.
+  bool lungs = false;
   double mediastinum_half_width = -1;
 };
 
