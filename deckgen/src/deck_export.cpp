@@ -32,9 +32,9 @@ constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical h
 // cervical discs) takes it too: the hub cases' hourglass / internal energy 6.0 / 8.0 / 7.5 ->
 // 2.5 / 4.1 / 6.2 % (frontal 4.3, 6.7, oblique 9.5), the neck bricks no longer inverting
 // once the thorax under them is tetras. With the brick flesh (--flesh-bricks) two groups keep
-// the viscous form (Isolid 1): the thoracic flesh (with the presternal fat), a two-brick layer that the hub's rim
-// folds until a brick inverts with Isolid 24 (12.9-47.0 ms in the hub cases), and the neck's
-// soft tissue, whose bricks inverted in every run that changed it.
+// the viscous form (Isolid 1): the thoracic flesh (and the presternal fat), a two-brick layer
+// that the hub's rim folds until a brick inverts with Isolid 24 (12.9-47.0 ms in the hub
+// cases), and the neck's soft tissue, whose bricks inverted in every run that changed it.
 bool soft_tissue_physical_hourglass(const FePart& p, bool tetra_flesh) {
   return tetra_flesh || (p.segment != "neck" && p.name != "flesh_thorax" && p.name != "flesh_presternal");
 }
