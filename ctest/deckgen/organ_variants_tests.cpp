@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The thoracic organ block's anatomical variants (organ_variants.hpp) on the model built from
-// geometry/: the pleura (hbm-deckgen --pleura), a water-like band (--mediastinum), the lungs
-// and the mediastinum of thoracic_organs.csv (--lungs): what each moves, what it must leave
-// alone, the mass, and the lungs' bulk modulus from the air in them.
+// The thoracic organ block (organ_variants.hpp) on the model built from geometry/: the lungs
+// and the water-like mediastinum of thoracic_organs.csv (the default) and its re-cut
+// (hbm-deckgen --mediastinum), the seed's undifferentiated block (--undifferentiated-organs)
+// with a water-like band over its whole height, the pleura (--pleura): what each moves, what
+// it must leave alone, the mass, and the lungs' bulk modulus from the air in them.
 #include "hbm/deckgen/geometry_sources.hpp"
 #include "hbm/deckgen/body_mesher.hpp"
 #include "hbm/deckgen/model_checks.hpp"
@@ -25,24 +26,25 @@ const GeometrySources& geometry() {
   return g;
 }
 
-const FeModel& built_model() {
+// The seed's undifferentiated, air-filled thoracic organ block (hbm-deckgen
+// --undifferentiated-organs): what the band and pleura variants start from.
+const FeModel& seed_model() {
   static const FeModel m = [] {
-    GeometrySources g = load_geometry(std::filesystem::path(HBM_SOURCE_DIR) / "geometry");
+    MesherOptions o;
+    o.lungs = false;
     ModelLandmarks lm;
-    FeModel x = build_body_model(g, MesherOptions{}, &lm);
-    assign_rigid_body_masses(x, g, lm);
+    FeModel x = build_body_model(geometry(), o, &lm);
+    assign_rigid_body_masses(x, geometry(), lm);
     return x;
   }();
   return m;
 }
 
-// The model with MesherOptions::lungs (hbm-deckgen --lungs).
+// The default model: the block is the lungs and the mediastinum of thoracic_organs.csv.
 const FeModel& lungs_model() {
   static const FeModel m = [] {
-    MesherOptions o;
-    o.lungs = true;
     ModelLandmarks lm;
-    FeModel x = build_body_model(geometry(), o, &lm);
+    FeModel x = build_body_model(geometry(), MesherOptions{}, &lm);
     assign_rigid_body_masses(x, geometry(), lm);
     return x;
   }();
@@ -103,7 +105,7 @@ double part_volume(const FeModel& m, int part) {
 }  // namespace
 
 TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) {
-  FeModel m = built_model();
+  FeModel m = seed_model();
   const int organs = m.find_part("thoracic_organs");
   ASSERT_GE(organs, 0);
   ASSERT_LT(m.find_part("mediastinum"), 0);  // the seed's undifferentiated block
@@ -160,7 +162,7 @@ TEST(OrganVariants, PleuraDetachesTheBlockFromTheChestWallAndKeepsItOnTheSpine) 
 }
 
 TEST(OrganVariants, MediastinumIsTheWaterLikeBandWithinItsHalfWidth) {
-  FeModel m = built_model();
+  FeModel m = seed_model();
   const int organs = m.find_part("thoracic_organs");
   const int abdominal = m.find_material("abdominal_organs");
   ASSERT_GE(organs, 0);
@@ -197,7 +199,7 @@ TEST(OrganVariants, MediastinumIsTheWaterLikeBandWithinItsHalfWidth) {
               1e-9 * block_mass);
 }
 
-TEST(OrganVariants, LungsVariantCutsTheSourcesWaterLikeMediastinum) {
+TEST(OrganVariants, DefaultBlockIsTheLungsAndTheSourcesWaterLikeMediastinum) {
   const FeModel& m = lungs_model();
   const GeometrySources& g = geometry();
   const int med = m.find_part("mediastinum");
@@ -240,7 +242,7 @@ TEST(OrganVariants, MediastinumRecutKeepsTheBlock) {
 }
 
 TEST(OrganVariants, BadHalfWidthAndMissingPartsAreErrors) {
-  FeModel m = built_model();
+  FeModel m = seed_model();
   EXPECT_THROW(add_mediastinum(m, 0.0), std::invalid_argument);
   EXPECT_THROW(add_mediastinum(m, -3.0), std::invalid_argument);
   FeModel empty;
@@ -255,7 +257,7 @@ TEST(OrganVariants, BadHalfWidthAndMissingPartsAreErrors) {
 
 TEST(OrganVariants, MediastinumSlidesWithTheBlockUnderThePleura) {
   {  // a band cut after the pleura joins its contact
-    FeModel m = built_model();
+    FeModel m = seed_model();
     const int organs = m.find_part("thoracic_organs");
     const std::size_t detached = add_pleura(m);
     add_mediastinum(m, 25.0);

@@ -367,8 +367,8 @@ void Builder::build_torso() {
     bool thoracic = L.vertebra.size() > 1 && L.vertebra[0] == 'T' && L.region == "thorax";
     std::string set = thoracic ? "thoracic_organs" : "abdominal_organs";
     std::string name = set + (L.region == (thoracic ? "thorax" : "abdomen") ? "" : "_" + L.region);
-    // MesherOptions::lungs: the thoracic part is the lungs alone (the mediastinum is cut out
-    // of it in build_body_model).
+    // MesherOptions::lungs (the default): the thoracic part is the lungs alone (the
+    // mediastinum is cut out of it in build_body_model); without it the seed's block.
     return part(name, ElementKind::Brick, material(thoracic && o_.lungs ? "lungs" : set), L.region, "organs");
   };
   for (int l = 0; l + 1 < torso_->levels(); ++l) {
@@ -1305,8 +1305,8 @@ FeModel Builder::run(ModelLandmarks* lm) {
 FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, ModelLandmarks* landmarks) {
   Builder b(g, opt);
   FeModel m = b.run(landmarks);
-  // Variant: the organ block's water-like mediastinum (thoracic_organs.csv), from the
-  // diaphragm up to the top vertebra's upper endplate; the rest is the lungs.
+  // The organ block's water-like mediastinum (thoracic_organs.csv), from the diaphragm up to
+  // the top vertebra's upper endplate; the rest is the lungs.
   if (opt.lungs) {
     const double half_width = opt.mediastinum_half_width > 0 ? opt.mediastinum_half_width : g.mediastinum.half_width;
     add_mediastinum(m, half_width, g.vertebra(g.mediastinum.top_vertebra).upper.y());

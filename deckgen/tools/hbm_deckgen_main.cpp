@@ -45,14 +45,14 @@ int main(int argc, char** argv) {
   bool pleura = false;
   app.add_flag("--pleura", pleura,
                "variant: the thoracic organ block slides on the chest wall (frictionless contact; default: shared nodes)");
-  bool lungs = false;
-  app.add_flag("--lungs", lungs,
-               "variant: the thoracic organ block is the lungs and a water-like mediastinum (thoracic_organs.csv; default: "
-               "the seed's undifferentiated, air-filled block)");
+  bool undifferentiated = false;
+  app.add_flag("--undifferentiated-organs", undifferentiated,
+               "variant: the seed's undifferentiated, air-filled thoracic organ block (materials.csv thoracic_organs) "
+               "instead of the lungs and a water-like mediastinum (thoracic_organs.csv)");
   double mediastinum = 0;
   app.add_option("--mediastinum", mediastinum,
-                 "HALF_WIDTH (mm), variant: the thoracic organ block within HALF_WIDTH of the mid-plane is water-like "
-                 "(abdominal organ set); with --lungs the mediastinum's half width (default thoracic_organs.csv)");
+                 "HALF_WIDTH (mm): the water-like mediastinum's half width (default thoracic_organs.csv); with "
+                 "--undifferentiated-organs a water-like band of that half width over the block's whole height");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
       }
       o.mediastinum_half_width = mediastinum;
     }
-    o.lungs = lungs;
+    o.lungs = !undifferentiated;
     if (app.count("--rib-fracture")) {
       const auto& b = g.rib_bone;
       if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max)) {
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     if (o.rib_fracture_age >= 0)
       m.notes.push_back("rib fracture model: elastoplastic ribs deleted at the median failure strain at " +
                         std::to_string(std::lround(o.rib_fracture_age)) + " years (--rib-fracture)");
-    if (app.count("--mediastinum") && !lungs) dg::add_mediastinum(m, mediastinum);  // the block's whole height
+    if (app.count("--mediastinum") && undifferentiated) dg::add_mediastinum(m, mediastinum);  // the block's whole height
     if (pleura) dg::add_pleura(m);
     std::cout << "hbm-deckgen: " << m.nodes.size() << " nodes, " << m.element_count() << " elements, " << m.parts.size() << " parts, "
               << m.rigid_bodies.size() << " rigid bodies, " << m.interfaces.size() << " contact interfaces\n\n";

@@ -30,10 +30,11 @@ struct MesherOptions {
   // Rib fracture model (rib_fracture.hpp): elastoplastic rib strips deleted at the failure
   // strain of a subject of this age [years]; < 0: elastic ribs (the default model).
   double rib_fracture_age = -1;
-  // Variant (organ_variants.hpp): the thoracic organ block as the lungs (materials.csv
-  // lungs) and a water-like mediastinum (thoracic_organs.csv) instead of the seed's
-  // undifferentiated, air-filled block; the mediastinum's half width (mm), <= 0: the source's.
-  bool lungs = false;
+  // The thoracic organ block as the lungs (materials.csv lungs) and a water-like mediastinum
+  // (thoracic_organs.csv; organ_variants.hpp), the default since 2026-11-25; false: the
+  // seed's undifferentiated, air-filled block (materials.csv thoracic_organs). The
+  // mediastinum's half width (mm), <= 0: the source's.
+  bool lungs = true;
   double mediastinum_half_width = -1;
 };
 
