@@ -1,23 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Anatomical variants of the thoracic organ block, for calibration studies (issue 8;
-// geometry/calibration-notes-validation.md). The default model follows the seed: one
-// undifferentiated, air-filled organ block sharing every node with the rib cage, the spine
-// and the thoracic flesh. None of the variants is the default.
+// The thoracic organ block's parts and its anatomical variants (issue 8;
+// geometry/calibration-notes-validation.md). The block shares every node with the rib cage,
+// the spine and the thoracic flesh, as in the seed.
 //  - Mediastinum: the column between the two pleural sacs (heart, great vessels, blood,
 //    oesophagus) is water-like, not air-filled: the organ bricks whose centroid lies within a
 //    half width of the mid-plane (y = 0), and below a height, become a part `mediastinum` with
-//    the abdominal organ set (1060 kg/m^3, the liver's bulk modulus). hbm-deckgen
-//    --mediastinum W cuts such a band over the block's whole height, the rest of the block
-//    unchanged; --lungs (MesherOptions::lungs) cuts the column of thoracic_organs.csv (Gleeson
-//    2001's mean mediastinal width, below the T4 upper endplate) and gives the rest the lungs'
-//    set (materials.csv lungs: their air alone, inflated lung's density).
-//  - Pleura: the lungs slide on the chest wall. The block's nodes (with the mediastinum where
-//    the model has one) that it shares only with the wall (ribs, costal cartilage, sternum,
-//    thoracic flesh) are duplicated, the block takes the copies, and a frictionless
-//    /INTER/TYPE7 holds the wall nodes on the block's surface (the pleural cavity holds a few
-//    ml of lubricating fluid). Nodes the block shares with anything else (spine, discs,
-//    abdominal organs, inlet fascia, springs, rigid bodies) stay shared: the lungs hang from
-//    the hilum and the mediastinum. Contact interfaces on wall nodes stay with the wall.
+//    the abdominal organ set (1060 kg/m^3, the liver's bulk modulus). The default model
+//    (MesherOptions::lungs) cuts the column of thoracic_organs.csv (Gleeson 2001's mean
+//    mediastinal width, below the T4 upper endplate) and gives the rest the lungs' set
+//    (materials.csv lungs: their air alone, inflated lung's density); hbm-deckgen
+//    --mediastinum W re-cuts it. With --undifferentiated-organs (the seed's block, one
+//    air-filled set) --mediastinum W cuts a band over the block's whole height.
+//  - Pleura (variant): the lungs slide on the chest wall. The block's nodes (with the
+//    mediastinum where the model has one) that it shares only with the wall (ribs, costal
+//    cartilage, sternum, thoracic flesh) are duplicated, the block takes the copies, and a
+//    frictionless /INTER/TYPE7 holds the wall nodes on the block's surface (the pleural
+//    cavity holds a few ml of lubricating fluid). Nodes the block shares with anything else
+//    (spine, discs, abdominal organs, inlet fascia, springs, rigid bodies) stay shared: the
+//    lungs hang from the hilum and the mediastinum. Contact interfaces on wall nodes stay
+//    with the wall.
 #pragma once
 
 #include "hbm/deckgen/fe_model.hpp"
