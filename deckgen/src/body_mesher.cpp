@@ -238,6 +238,7 @@ class Builder {
   std::map<int, std::string> rigid_of_;
   std::unique_ptr<TrunkGrid> torso_, neck_;
   std::vector<LayerInfo> torso_layers_, neck_layers_;
+  std::pair<int, int> sternum_layers_{-1, -1};  // torso body layers of the sternum's lowest and highest vertebra
   int neck_top_level_ = 0;
   std::vector<std::array<int, 4>> torso_skin_, neck_skin_;
   std::vector<std::array<int, 8>> torso_hexes_;   // the fine grid's cells (also where flesh is tetras)
@@ -341,6 +342,7 @@ void Builder::build_torso() {
   gp.n = o_.torso_around;
   torso_ = std::make_unique<TrunkGrid>(m_, g_.torso, lv, gp);
   torso_layers_ = layers;
+  sternum_layers_ = {layer_of_body(kSternumLowestBody), layer_of_body(kSternumHighestBody)};
 
   const int N = torso_->n(), m = torso_->m();
   const int vert_mat = material("vertebra");
@@ -582,7 +584,7 @@ int Builder::layer_of_body(const std::string& vertebra) const {
 
 bool Builder::is_presternal_cell(int first_layer, int last_layer, int j) const {
   const int N = torso_->n();
-  return (j == 0 || j == N - 1) && first_layer >= layer_of_body(kSternumLowestBody) && last_layer <= layer_of_body(kSternumHighestBody);
+  return (j == 0 || j == N - 1) && first_layer >= sternum_layers_.first && last_layer <= sternum_layers_.second;
 }
 
 void Builder::build_ribcage() {
@@ -693,7 +695,7 @@ void Builder::build_ribcage() {
   // Sternum: front cells from the rib-1 band to the rib-7 band.
   const auto [smi, teq] = sandwich_material("sternum", "sternum_cortical", "sternum");
   int sp = part("sternum", ElementKind::Tria, smi, "thorax", "sternum", teq);
-  int l1 = layer_of_body(kSternumHighestBody), l7 = layer_of_body(kSternumLowestBody);
+  const auto [l7, l1] = sternum_layers_;
   for (int l = l7; l <= l1; ++l)
     for (int side = 0; side < 2; ++side) {
       bool left = side == 0;

@@ -116,9 +116,11 @@ std::size_t add_mediastinum(FeModel& m, double half_width, double z_top) {
     block.push_back({&part, in});
     inside += in ? 1 : 0;
   });
-  if (inside == 0)
-    throw std::invalid_argument("mediastinum: no thoracic organ element has its centroid within " + hw.str() +
-                                " mm of the mid-plane and below z = " + std::to_string(z_top) + " mm");
+  // The column as the error and the deck's note name it.
+  std::ostringstream where;
+  where << "within " << hw.str() << " mm of the mid-plane";
+  if (std::isfinite(z_top)) where << " and below z = " << std::fixed << std::setprecision(1) << z_top << " mm";
+  if (inside == 0) throw std::invalid_argument("mediastinum: no thoracic organ element has its centroid " + where.str());
   int mediastinum = existing;
   if (mediastinum < 0) {
     FePart p = m.parts[static_cast<std::size_t>(organs)];
@@ -132,11 +134,8 @@ std::size_t add_mediastinum(FeModel& m, double half_width, double z_top) {
     if (std::find(f.main_parts.begin(), f.main_parts.end(), organs) != f.main_parts.end() &&
         std::find(f.main_parts.begin(), f.main_parts.end(), mediastinum) == f.main_parts.end())
       f.main_parts.push_back(mediastinum);
-  std::ostringstream note;
-  note << "mediastinum: " << inside << " thoracic organ elements within " << hw.str() << " mm of the mid-plane";
-  if (std::isfinite(z_top)) note << " and below z = " << std::fixed << std::setprecision(1) << z_top << " mm";
-  note << " take the abdominal organ set (water-like)";
-  m.notes.push_back(note.str());
+  m.notes.push_back("mediastinum: " + std::to_string(inside) + " thoracic organ elements " + where.str() +
+                    " take the abdominal organ set (water-like)");
   return inside;
 }
 
