@@ -36,7 +36,8 @@ constexpr int kSoftPhysicalProp = 3;   // soft tissue bricks (LAW34), physical h
 // that the hub's rim folds until a brick inverts with Isolid 24 (12.9-47.0 ms in the hub
 // cases), and the neck's soft tissue, whose bricks inverted in every run that changed it.
 bool soft_tissue_physical_hourglass(const FePart& p, bool tetra_flesh) {
-  return tetra_flesh || (p.segment != "neck" && p.name != "flesh_thorax" && p.name != "flesh_presternal");
+  const bool thoracic_flesh = p.segment == "thorax" && p.region == "flesh";  // flesh_thorax, flesh_presternal
+  return tetra_flesh || (p.segment != "neck" && !thoracic_flesh);
 }
 
 int shell_prop_id(const FePart& p) { return 1000 + p.id; }

@@ -14,9 +14,10 @@ namespace hbm::deckgen {
 namespace {
 
 // The chest wall the lungs slide on: ribs, costal cartilage, sternum and the thoracic
-// flesh (intercostal and pectoral muscle layer, the presternal fat) the block shares nodes with.
-bool is_chest_wall(const std::string& part) {
-  return part == "flesh_thorax" || part == "flesh_presternal" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
+// flesh (intercostal and pectoral muscle layer, the presternal fat) the block shares nodes
+// with, by the budget regions body_mesher gives them.
+bool is_chest_wall(const FePart& p) {
+  return p.segment == "thorax" && (p.region == "flesh" || p.region == "ribs" || p.region == "cartilage" || p.region == "sternum");
 }
 
 int required_part(const FeModel& m, const std::string& name, const char* variant) {
@@ -45,7 +46,7 @@ std::size_t add_pleura(FeModel& m) {
   std::vector<unsigned char> held(m.nodes.size(), 0);
   auto flag_of = [&](int part) -> unsigned char {
     if (in_block(part)) return kBlock;
-    return is_chest_wall(m.parts[static_cast<std::size_t>(part)].name) ? kWall : kOther;
+    return is_chest_wall(m.parts[static_cast<std::size_t>(part)]) ? kWall : kOther;
   };
   auto mark = [&](const auto& elements, const std::vector<int>& part_of) {
     for (std::size_t e = 0; e < elements.size(); ++e)
