@@ -17,7 +17,10 @@
 # normally and every rating was written, 1 otherwise, 2 on bad usage. --deck-hook SCRIPT:
 # `bash SCRIPT CASE_0000.rad` runs on every generated case deck before the runs (a model
 # variant that rewrites the model the deck includes); with --tstop only, so that the committed
-# decks are not touched. --deckgen "OPTIONS": validate a model variant instead of --model:
+# decks are not touched, and on copies of the model folders in WORK/model/ (the base model's
+# and each posed variant's), so that the committed model is not either. Cases that share a
+# model share its copy: the hook runs once per case deck and must give the same file when
+# run again (set a value, do not add to it). --deckgen "OPTIONS": validate a model variant instead of --model:
 # hbm-deckgen OPTIONS (e.g. "--pleura --mediastinum 25", docs/deckgen.md) builds the body
 # model and its posed variant (the arm-raised model of the oblique cases) into WORK/model/;
 # with --tstop only, as --deck-hook. --geometry DIR: the geometry sources hbm-loadcase (and
@@ -81,6 +84,23 @@ if [[ -n $deckgen_set ]]; then
   echo "model variant: hbm-deckgen ${deckgen_options} -> $model"
 fi
 [[ -f $model ]] || { echo "validate.sh: no body model $model (generate it with hbm-deckgen)" >&2; exit 1; }
+if [[ -n $deck_hook && -z $deckgen_set ]]; then
+  # The hook rewrites the model the case decks include: give it copies (the base model's
+  # folder and each posed variant's beside it, as hbm-loadcase finds them), never the
+  # committed files.
+  model_dir=$(cd "$(dirname "$model")" && pwd)
+  rm -rf "$work/model"
+  mkdir -p "$work/model"
+  cp -r "$model_dir" "$work/model/"
+  for c in $cases; do "$bin/hbm-loadcase" --case "$c" --print-posed-model; done | sort -u |
+    while read -r posed _; do
+      posed_dir=$(dirname "$model_dir")/$(dirname "$posed")
+      [[ -d $posed_dir ]] || { echo "validate.sh: no posed model folder $posed_dir" >&2; exit 1; }
+      [[ -d $work/model/$(basename "$posed_dir") ]] || cp -r "$posed_dir" "$work/model/"
+    done
+  model=$work/model/$(basename "$model_dir")/$(basename "$model")
+  echo "deck hook: the model and its posed variants copied to $work/model/"
+fi
 mkdir -p "$work/runs" "$work/reports"
 if [[ -n $tstop ]]; then decks=$work/decks; else decks=decks; fi
 
