@@ -190,6 +190,102 @@ TEST(ShellMaterialPoint, Law36ElementRateIsFilteredAndSharedByThePoints) {
   EXPECT_GT(checked, 1000);
 }
 
+namespace {
+
+// A skin-like two-pair Ogden law (GPa): soft toe, stiff beyond (the pair with the large
+// exponent takes over).
+ShellMaterial ogden_two_pair() {
+  ShellMaterial m;
+  m.law = ShellLaw::Ogden;
+  m.rho = 1e-6;
+  m.mu[0] = 3e-4;
+  m.alpha[0] = 2.0;
+  m.mu[1] = 1e-6;
+  m.alpha[1] = 24.0;
+  return m;
+}
+
+}  // namespace
+
+TEST(ShellMaterialPoint, OgdenUniaxialTensionMatchesTheClosedForm) {
+  // LAW42, incompressible plane stress, uniaxial tension along x: l2 = l3 = l^-1/2 and
+  // sigma_xx = sum mu_p (l^a_p - l^(-a_p/2)) (Ogden 1972), sigma_yy = 0; thickness strain
+  // ln l3 = -ln(l) / 2. Reached in 400 increments of the log strain.
+  const ShellMaterial m = ogden_two_pair();
+  ASSERT_TRUE(m.check().empty());
+  PointStress s{0, 0, 0};
+  double epsp = 0, hist[3] = {0, 0, 0}, ezz = 0;
+  const double e = std::log(1.45);
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double de[3] = {e / n, -0.5 * e / n, 0};
+    ezz += update_point(m, de, 1e-6, s, epsp, hist).dezz;
+  }
+  const double l = 1.45;
+  const double closed = 3e-4 * (l * l - 1.0 / l) + 1e-6 * (std::pow(l, 24.0) - std::pow(l, -12.0));
+  EXPECT_NEAR(s.sxx, closed, 1e-12 * closed);
+  EXPECT_NEAR(s.sxx, m.ogden_uniaxial_stress(l), 1e-12 * closed);
+  EXPECT_NEAR(s.syy, 0.0, 1e-12 * closed);
+  EXPECT_NEAR(s.sxy, 0.0, 1e-12 * closed);
+  EXPECT_NEAR(ezz, -0.5 * e, 1e-12);
+  // Small-strain limit: E = 3 G with G = sum mu_p alpha_p / 2, nu = 0.5.
+  EXPECT_NEAR(m.young(), 3.0 * (3e-4 * 2.0 + 1e-6 * 24.0) / 2.0, 1e-15);
+  EXPECT_DOUBLE_EQ(m.poisson(), 0.5);
+}
+
+TEST(ShellMaterialPoint, OgdenStressTurnsWithThePrincipalAxes) {
+  // The same principal strains (ln 1.3, -0.1) with their axes at 30 deg to x: the stress is
+  // the principal stresses turned by 30 deg (isotropy), whatever order the increments take.
+  const ShellMaterial m = ogden_two_pair();
+  const double e1 = std::log(1.3), e2 = -0.1, th = std::numbers::pi / 6.0;
+  const double c = std::cos(th), sn = std::sin(th);
+  const double exx = e1 * c * c + e2 * sn * sn, eyy = e1 * sn * sn + e2 * c * c, gxy = 2.0 * (e1 - e2) * sn * c;
+  PointStress s{0, 0, 0};
+  double epsp = 0, hist[3] = {0, 0, 0};
+  for (int i = 0; i < 50; ++i) {
+    const double de[3] = {exx / 50, eyy / 50, gxy / 50};
+    update_point(m, de, 1e-6, s, epsp, hist);
+  }
+  const double l1 = std::exp(e1), l2 = std::exp(e2), l3 = 1.0 / (l1 * l2);
+  double s1 = 0, s2 = 0;
+  for (int p = 0; p < 2; ++p) {
+    s1 += m.mu[p] * (std::pow(l1, m.alpha[p]) - std::pow(l3, m.alpha[p]));
+    s2 += m.mu[p] * (std::pow(l2, m.alpha[p]) - std::pow(l3, m.alpha[p]));
+  }
+  const double tol = 1e-12 * std::abs(s1);
+  EXPECT_NEAR(s.sxx, s1 * c * c + s2 * sn * sn, tol);
+  EXPECT_NEAR(s.syy, s1 * sn * sn + s2 * c * c, tol);
+  EXPECT_NEAR(s.sxy, (s1 - s2) * sn * c, tol);
+}
+
+TEST(ShellMaterialPoint, OgdenCutOffStepModulusAndChecks) {
+  ShellMaterial m = ogden_two_pair();
+  // sigma_cut caps the principal stress in tension.
+  m.sigma_cut = 1e-3;
+  PointStress s{0, 0, 0};
+  double epsp = 0, hist[3] = {0, 0, 0};
+  const double de[3] = {std::log(1.5), -0.5 * std::log(1.5), 0};
+  update_point(m, de, 1e-6, s, epsp, hist);
+  EXPECT_DOUBLE_EQ(s.sxx, 1e-3);
+  // The stable step holds up to a stretch of 1.6: the wave speed takes the stiffest uniaxial
+  // tangent d sigma / d ln(l) there (a stiffening law: at 1.6 itself), far above the
+  // small-strain speed.
+  const double l = ShellMaterial::kOgdenStepStretch, h = 1e-6;
+  const double tangent = (m.ogden_uniaxial_stress(l * std::exp(h)) - m.ogden_uniaxial_stress(l * std::exp(-h))) / (2 * h);
+  EXPECT_NEAR(m.plate_wave_speed(), std::sqrt(tangent / (m.rho * 0.75)), 1e-3 * m.plate_wave_speed());
+  EXPECT_GT(m.plate_wave_speed(), 3.0 * std::sqrt(m.young() / (m.rho * 0.75)));
+  // Checks: a pair softening in its own sense, no modulus, a zero exponent.
+  ShellMaterial bad = ogden_two_pair();
+  bad.alpha[1] = -24.0;
+  EXPECT_FALSE(bad.check().empty());
+  bad = ogden_two_pair();
+  bad.mu[0] = bad.mu[1] = 0.0;
+  EXPECT_FALSE(bad.check().empty());
+  bad = ogden_two_pair();
+  bad.alpha[0] = 0.0;
+  EXPECT_FALSE(bad.check().empty());
+}
+
 TEST(ShellMaterialPoint, ViscoelasticEquibiaxialInstantaneousAndRelaxed) {
   // LAW34 in plane stress, equibiaxial strain step eps held: sigma = E/(1-nu) eps with
   // (E, nu) from (K, G0) at once and from (K, Ginf) after relaxation (sigma_zz = 0).

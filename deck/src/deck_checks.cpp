@@ -326,6 +326,9 @@ class Checker {
         if (fam == Family::Shell && mk == "/MAT/LAW34")
           sink_.error(c.loc, 1, card_label(c) + ": part " + std::to_string(c.id) + " has material " +
                                     card_label(*mat) + ", which applies to solid elements only");
+        if (fam == Family::Solid && mk == "/MAT/LAW42")
+          sink_.error(c.loc, 1, card_label(c) + ": part " + std::to_string(c.id) + " has material " +
+                                    card_label(*mat) + ", which this library applies to shell elements only");
       }
     }
   }

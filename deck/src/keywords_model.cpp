@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Keyword tables of parts, properties and materials: /PART, /PROP/TYPE1 (shell),
 // /PROP/TYPE4 (1-DOF spring), /PROP/TYPE8 and /PROP/TYPE13 (6-DOF springs), /PROP/TYPE14
-// (solid), /MAT/LAW1, /MAT/LAW2, /MAT/LAW34, /MAT/LAW36. Layouts: Radioss 2024 reference
+// (solid), /MAT/LAW1, /MAT/LAW2, /MAT/LAW34, /MAT/LAW36, /MAT/LAW42. Layouts: Radioss 2024 reference
 // guide, block format; every numeric range here is enforced by the checks.
 #include "field_builders.hpp"
 
@@ -256,6 +256,40 @@ void add_starter_model(std::vector<KeywordSpec>& out) {
         real_field("Phi", 20, Dimension::None, kUnit, 0, "foam to polymer density ratio"),
         real_field("Gamma0", 40, Dimension::Strain, kAny, 0, "initial volumetric strain"),
     }, true));
+    out.push_back(std::move(k));
+  }
+  {
+    // Layout of the Radioss reference guide (/MAT/LAW42 (OGDEN)): rho_i; nu, sigma_cut,
+    // (blank), fct_IDblk, Fscale_blk, M, Iform; mu_1..mu_5; alpha_1..alpha_5; Prony terms when
+    // M > 0 (not read: M is held to 0 by its range, as fct_IDblk and Iform).
+    KeywordSpec k = object("/MAT/LAW42",
+                           "Ogden hyperelastic incompressible material: W = sum mu_p / alpha_p (l1^a_p + "
+                           "l2^a_p + l3^a_p - 3) (this library: shells, no Prony terms, no bulk function).");
+    k.lines.push_back(density_line());
+    k.lines.push_back(line("parameters", {
+        zero_means_default(real_field("nu", 0, Dimension::None, {0, 0.5, false, true}, 0.495,
+                                      "Poisson's ratio (0 = 0.495; shells follow incompressibility)")),
+        zero_means_default(real_field("sigma_cut", 20, Dimension::Stress, kPositive, 1e30,
+                                      "cut-off of the principal stresses in tension (0 = 1e30)")),
+        int_field("fct_IDblk", 50, 0, 0, 0, "bulk function (this library: 0, none)", Dimension::Id),
+        real_field("Fscale_blk", 60, Dimension::None, kAny, 0, "scale of the bulk function"),
+        int_field("M", 80, 0, 0, 0, "number of Prony terms (this library: 0)", Dimension::Count),
+        int_field("Iform", 90, 0, 0, 0, "shell incompressibility formulation (this library: 0)"),
+    }));
+    k.lines.push_back(line("mu", {
+        real_field("mu1", 0, Dimension::Stress, kAny, 0, "Ogden modulus of pair 1"),
+        real_field("mu2", 20, Dimension::Stress, kAny, 0, "Ogden modulus of pair 2"),
+        real_field("mu3", 40, Dimension::Stress, kAny, 0, "Ogden modulus of pair 3"),
+        real_field("mu4", 60, Dimension::Stress, kAny, 0, "Ogden modulus of pair 4"),
+        real_field("mu5", 80, Dimension::Stress, kAny, 0, "Ogden modulus of pair 5"),
+    }));
+    k.lines.push_back(line("alpha", {
+        real_field("alpha1", 0, Dimension::None, kAny, 0, "Ogden exponent of pair 1"),
+        real_field("alpha2", 20, Dimension::None, kAny, 0, "Ogden exponent of pair 2"),
+        real_field("alpha3", 40, Dimension::None, kAny, 0, "Ogden exponent of pair 3"),
+        real_field("alpha4", 60, Dimension::None, kAny, 0, "Ogden exponent of pair 4"),
+        real_field("alpha5", 80, Dimension::None, kAny, 0, "Ogden exponent of pair 5"),
+    }));
     out.push_back(std::move(k));
   }
   {

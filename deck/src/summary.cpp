@@ -5,7 +5,9 @@
 //           dilatational wave speed c = sqrt(E (1-nu) / ((1+nu)(1-2nu) rho)) for LAW1/2/36,
 //           c = sqrt((K + 4/3 G0) / rho) for LAW34;
 //   shells: L = area / longest diagonal (quad), 2 area / longest edge (triangle),
-//           plane-stress speed c = sqrt(E / ((1 - nu^2) rho));
+//           plane-stress speed c = sqrt(E / ((1 - nu^2) rho)); LAW42 (Ogden, incompressible)
+//           with nu = 0.5 and E its stiffest uniaxial tangent up to a stretch of 1.6, as the
+//           engine's shells take it (solver/src/shells/shell_material.cpp);
 //   springs: dt = sqrt(2 m / k) with m the property mass and k the largest translational
 //           stiffness (Radioss spring time step, reference guide /PROP/TYPE4).
 #include "hbm/deck/summary.hpp"
@@ -72,6 +74,27 @@ Material material_of(const Card* m) {
   if (kw == "/MAT/LAW34") {
     const double k = m->real(1, "K"), g0 = m->real(2, "G0");
     out.c_solid = std::sqrt((k + 4.0 / 3.0 * g0) / out.rho);
+    return out;
+  }
+  if (kw == "/MAT/LAW42") {
+    double mu[5], al[5];
+    for (int p = 0; p < 5; ++p) {
+      mu[p] = m->real(2, "mu" + std::to_string(p + 1));
+      al[p] = m->real(3, "alpha" + std::to_string(p + 1));
+    }
+    auto uniaxial = [&](double l) {  // Cauchy stress of incompressible uniaxial tension
+      double sig = 0;
+      for (int p = 0; p < 5; ++p)
+        if (mu[p] != 0.0) sig += mu[p] * (std::pow(l, al[p]) - std::pow(l, -0.5 * al[p]));
+      return sig;
+    };
+    double e = 0;
+    for (int p = 0; p < 5; ++p) e += 1.5 * mu[p] * al[p];
+    for (int i = 1; i <= 100; ++i) {
+      const double l = 1.0 + 0.6 * i / 100.0, h = 1e-4;
+      e = std::max(e, (uniaxial(l * (1 + h)) - uniaxial(l * (1 - h))) / (std::log1p(h) - std::log1p(-h)));
+    }
+    if (e > 0) out.c_shell = std::sqrt(e / (0.75 * out.rho));
     return out;
   }
   const double e = m->real(1, "E"), nu = m->real(1, "nu");
@@ -258,6 +281,11 @@ void print_model_summary(std::ostream& os, const Deck& d) {
     os << "    " << c.keyword() << "/" << c.id << "  " << c.title << "  rho " << fmt(m.rho);
     if (c.keyword() == "/MAT/LAW34") {
       os << "  K " << fmt(c.real(1, "K")) << "  G0 " << fmt(c.real(2, "G0")) << "  Ginf " << fmt(c.real(2, "Ginf"));
+    } else if (c.keyword() == "/MAT/LAW42") {
+      for (int p = 1; p <= 5; ++p) {
+        const double mu = c.real(2, "mu" + std::to_string(p));
+        if (mu != 0.0) os << "  mu" << p << " " << fmt(mu) << " alpha" << p << " " << fmt(c.real(3, "alpha" + std::to_string(p)));
+      }
     } else {
       os << "  E " << fmt(c.real(1, "E")) << "  nu " << fmt(c.real(1, "nu"));
     }

@@ -67,13 +67,21 @@ bool read_shell_material(BuildContext& ctx, const hbm::deck::Card& m, ShellMater
       ctx.error(m, "foam air pressure P0 != 0 is not supported on shells (tissue: 0)");
       return false;
     }
+  } else if (kw == "/MAT/LAW42") {
+    out.law = ShellLaw::Ogden;
+    out.sigma_cut = m.real(1, "sigma_cut");
+    for (int p = 0; p < ShellMaterial::kOgdenPairs; ++p) {
+      const std::string i = std::to_string(p + 1);
+      out.mu[p] = m.real(2, "mu" + i);
+      out.alpha[p] = m.real(3, "alpha" + i);
+    }
   } else if (kw == "/MAT/LAW36") {
     out.law = ShellLaw::Tabulated;
     out.E = m.real(1, "E");
     out.nu = m.real(1, "nu");
     if (!read_law36_hardening(ctx, m, out.plasticity)) return false;
   } else {
-    ctx.error(m, cat("material ", kw, " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36)"));
+    ctx.error(m, cat("material ", kw, " is not supported on shell elements (LAW1, LAW2, LAW34, LAW36, LAW42)"));
     return false;
   }
   const std::string_view why = out.check();

@@ -8,23 +8,61 @@
 
 namespace hbm::solver::shells {
 
+double ShellMaterial::ogden_uniaxial_stress(double l) const {
+  double s = 0;
+  for (int p = 0; p < kOgdenPairs; ++p)
+    if (mu[p] != 0.0) s += mu[p] * (std::pow(l, alpha[p]) - std::pow(l, -0.5 * alpha[p]));
+  return s;
+}
+
 double ShellMaterial::young() const {
   if (law == ShellLaw::Viscoelastic) return 9.0 * K * G0 / (3.0 * K + G0);
+  if (law == ShellLaw::Ogden) {
+    double g = 0;
+    for (int p = 0; p < kOgdenPairs; ++p) g += 0.5 * mu[p] * alpha[p];
+    return 3.0 * g;
+  }
   return E;
 }
 
 double ShellMaterial::poisson() const {
   if (law == ShellLaw::Viscoelastic) return (3.0 * K - 2.0 * G0) / (2.0 * (3.0 * K + G0));
+  if (law == ShellLaw::Ogden) return 0.5;
   return nu;
 }
 
 double ShellMaterial::plate_wave_speed() const {
-  const double e = young(), v = poisson();
+  double e = young();
+  const double v = poisson();
+  if (law == ShellLaw::Ogden) {
+    // The law stiffens with the stretch: the step takes the stiffest uniaxial tangent
+    // d sigma / d ln(l) up to kOgdenStepStretch (sampled every 1 %), so that it holds over
+    // the range the law is used in (skin fails near 1.5).
+    for (int i = 1; i <= 100; ++i) {
+      const double l = 1.0 + (kOgdenStepStretch - 1.0) * i / 100.0, h = 1e-4;
+      const double tangent = (ogden_uniaxial_stress(l * (1 + h)) - ogden_uniaxial_stress(l * (1 - h))) /
+                             (std::log1p(h) - std::log1p(-h));
+      e = std::max(e, tangent);
+    }
+  }
   return std::sqrt(e / (rho * (1.0 - v * v)));
 }
 
 std::string_view ShellMaterial::check() const {
   if (!(rho > 0)) return "density must be > 0";
+  if (law == ShellLaw::Ogden) {
+    // Drucker stability of the small-strain limit: the initial shear modulus must be > 0,
+    // and each pair must stiffen in its own sense (mu_p alpha_p >= 0), as OpenRadioss asks.
+    double g = 0;
+    for (int p = 0; p < kOgdenPairs; ++p) {
+      if (mu[p] != 0.0 && alpha[p] == 0.0) return "LAW42 needs alpha_p != 0 where mu_p != 0";
+      if (mu[p] * alpha[p] < 0.0) return "LAW42 needs mu_p alpha_p >= 0 for every pair";
+      g += 0.5 * mu[p] * alpha[p];
+    }
+    if (!(g > 0)) return "LAW42 needs an initial shear modulus sum(mu_p alpha_p) / 2 > 0";
+    if (!(sigma_cut > 0)) return "LAW42 needs sigma_cut > 0";
+    return {};
+  }
   if (law == ShellLaw::Viscoelastic) {
     if (!(K > 0) || !(G0 > 0)) return "LAW34 needs K > 0 and G0 > 0";
     if (Ginf < 0 || Ginf > G0) return "LAW34 needs 0 <= Ginf <= G0";
@@ -128,6 +166,36 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
 
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt, PointStress& s,
                          double& epsp, double* hist, double element_rate) {
+  if (m.law == ShellLaw::Ogden) {
+    // Total in-plane strain, its principal values and axis, stretches, Cauchy stresses.
+    hist[0] += de[0];
+    hist[1] += de[1];
+    hist[2] += de[2];
+    const double exx = hist[0], eyy = hist[1], exy = 0.5 * hist[2];
+    const double mid = 0.5 * (exx + eyy), rad = std::hypot(0.5 * (exx - eyy), exy);
+    const double e1 = mid + rad, e2 = mid - rad;
+    const double th = 0.5 * std::atan2(2.0 * exy, exx - eyy);  // axis of e1 from x
+    const double l1 = std::exp(e1), l2 = std::exp(e2), l3 = std::exp(-(e1 + e2));
+    double s1 = 0, s2 = 0;
+    for (int p = 0; p < ShellMaterial::kOgdenPairs; ++p) {
+      if (m.mu[p] == 0.0) continue;
+      const double a = m.alpha[p], l3a = std::pow(l3, a);
+      s1 += m.mu[p] * (std::pow(l1, a) - l3a);
+      s2 += m.mu[p] * (std::pow(l2, a) - l3a);
+    }
+    s1 = std::min(s1, m.sigma_cut);
+    s2 = std::min(s2, m.sigma_cut);
+    const double c = std::cos(th), sn = std::sin(th);
+    s.sxx = s1 * c * c + s2 * sn * sn;
+    s.syy = s1 * sn * sn + s2 * c * c;
+    s.sxy = (s1 - s2) * sn * c;
+    PointResult res;
+    res.dezz = -(de[0] + de[1]);  // ln l3 = -(e1 + e2): incompressible
+    (void)dt;
+    (void)epsp;
+    (void)element_rate;
+    return res;
+  }
   if (m.law == ShellLaw::Viscoelastic) {
     // sigma = 2 Ginf e + h + K eps_v 1, h_{n+1} = E1 h_n + 2 (G0 - Ginf) phi de,
     // E1 = exp(-beta dt), phi = (1 - E1) / (beta dt); dezz from sigma_zz = 0.

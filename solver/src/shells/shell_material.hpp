@@ -18,6 +18,13 @@
 //  - LAW34 Boltzmann viscoelasticity G(t) = Ginf + (G0 - Ginf) exp(-beta t) with bulk K,
 //    recursive update of the hereditary integral (Herrmann & Peterson 1968 /
 //    Radioss LAW34); the thickness strain increment is solved so that sigma_zz = 0.
+//  - LAW42 Ogden hyperelasticity, incompressible, in total form (Ogden 1972, Proc R Soc
+//    Lond A 326:565-584; Radioss LAW42 on shells): W = sum_p mu_p / alpha_p (l1^a_p +
+//    l2^a_p + l3^a_p - 3). The point keeps its total in-plane strain in the corotational
+//    frame (the sum of the rate-of-deformation increments: the logarithmic strain when the
+//    principal axes do not turn); principal stretches l_i = exp(e_i), l3 = 1 / (l1 l2)
+//    (plane stress, incompressible), Cauchy stresses s_i = sum_p mu_p (l_i^a_p - l3^a_p),
+//    each capped at sigma_cut in tension.
 #pragma once
 
 #include "hbm/solver/material/hardening.hpp"
@@ -30,7 +37,7 @@
 
 namespace hbm::solver::shells {
 
-enum class ShellLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, Viscoelastic = 34, Tabulated = 36 };
+enum class ShellLaw : std::uint8_t { Elastic = 1, JohnsonCook = 2, Viscoelastic = 34, Tabulated = 36, Ogden = 42 };
 
 struct ShellMaterial {
   ShellLaw law = ShellLaw::Elastic;
@@ -39,11 +46,26 @@ struct ShellMaterial {
   PlasticityLaw plasticity;  // LAW2 / LAW36 hardening and EPS_p_max (engine's)
   // LAW34
   double K = 0, G0 = 0, Ginf = 0, beta = 0;
+  // LAW42: Ogden pairs (mu_p [stress], alpha_p [-]; pairs with mu_p = 0 are unused) and the
+  // tension cut-off of the principal stresses [stress].
+  static constexpr int kOgdenPairs = 5;
+  double mu[kOgdenPairs] = {0, 0, 0, 0, 0}, alpha[kOgdenPairs] = {0, 0, 0, 0, 0};
+  double sigma_cut = 1e30;
+  // LAW42: the stretch (uniaxial, in the fibre direction) up to which the stable step holds:
+  // plate_wave_speed() takes the stiffest uniaxial tangent modulus up to it.
+  static constexpr double kOgdenStepStretch = 1.6;
 
   bool plastic() const { return law == ShellLaw::JohnsonCook || law == ShellLaw::Tabulated; }
-  // History values per integration point (LAW34: hereditary deviatoric stresses).
-  int n_history() const { return law == ShellLaw::Viscoelastic ? 4 : 0; }
-  // Instantaneous Young's modulus and Poisson ratio (LAW34 from K and G0).
+  // History values per integration point (LAW34: hereditary deviatoric stresses; LAW42:
+  // the total in-plane strain exx, eyy, gamma_xy in the corotational frame).
+  int n_history() const {
+    return law == ShellLaw::Viscoelastic ? 4 : law == ShellLaw::Ogden ? 3 : 0;
+  }
+  // LAW42: Cauchy stress of uniaxial tension at stretch l (plane stress, incompressible:
+  // l2 = l3 = l^-1/2): sum_p mu_p (l^a_p - l^(-a_p/2)).
+  double ogden_uniaxial_stress(double l) const;
+  // Instantaneous Young's modulus and Poisson ratio (LAW34 from K and G0; LAW42 the
+  // small-strain values 3 G and 0.5, G = sum_p mu_p alpha_p / 2).
   double young() const;
   double poisson() const;
   double shear_modulus() const { return young() / (2.0 * (1.0 + poisson())); }
