@@ -28,6 +28,17 @@ bool material_moduli(const hbm::deck::Card& mat, double& young, double& bulk) {
     young = 9.0 * bulk * g / (3.0 * bulk + g);
     return true;
   }
+  if (kw == "/MAT/LAW42") {
+    // Small-strain moduli as OpenRadioss's hm_read_mat42.F stores them: GS = sum mu_p
+    // alpha_p (twice the shear modulus), E = GS (1 + nu), K = GS (1 + nu) / (3 (1 - 2 nu)).
+    double gs = 0;
+    for (int p = 1; p <= 5; ++p)
+      gs += real_of(mat, 2, {"mu" + std::to_string(p)}) * real_of(mat, 3, {"alpha" + std::to_string(p)});
+    const double nu = real_of(mat, 1, {"nu"});
+    young = gs * (1.0 + nu);
+    bulk = young / (3.0 * (1.0 - 2.0 * nu));
+    return true;
+  }
   return false;
 }
 

@@ -167,28 +167,30 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt, PointStress& s,
                          double& epsp, double* hist, double element_rate) {
   if (m.law == ShellLaw::Ogden) {
-    // Total in-plane strain, its principal values and axis, stretches, Cauchy stresses.
+    // Total in-plane strain and its principal values e1 >= e2; l_i^a = exp(a e_i) and
+    // l3 = exp(-(e1 + e2)). The stress is coaxial with the strain: sigma = (s1 + s2)/2 I +
+    // (s1 - s2)/2 N with N = (e - mid I) / rad the unit deviatoric direction of the strain.
     hist[0] += de[0];
     hist[1] += de[1];
     hist[2] += de[2];
     const double exx = hist[0], eyy = hist[1], exy = 0.5 * hist[2];
-    const double mid = 0.5 * (exx + eyy), rad = std::hypot(0.5 * (exx - eyy), exy);
-    const double e1 = mid + rad, e2 = mid - rad;
-    const double th = 0.5 * std::atan2(2.0 * exy, exx - eyy);  // axis of e1 from x
-    const double l1 = std::exp(e1), l2 = std::exp(e2), l3 = std::exp(-(e1 + e2));
+    const double mid = 0.5 * (exx + eyy), hdiff = 0.5 * (exx - eyy);
+    const double rad = std::sqrt(hdiff * hdiff + exy * exy);
+    const double e1 = mid + rad, e2 = mid - rad, e3 = -(e1 + e2);
     double s1 = 0, s2 = 0;
     for (int p = 0; p < ShellMaterial::kOgdenPairs; ++p) {
       if (m.mu[p] == 0.0) continue;
-      const double a = m.alpha[p], l3a = std::pow(l3, a);
-      s1 += m.mu[p] * (std::pow(l1, a) - l3a);
-      s2 += m.mu[p] * (std::pow(l2, a) - l3a);
+      const double a = m.alpha[p], l3a = std::exp(a * e3);
+      s1 += m.mu[p] * (std::exp(a * e1) - l3a);
+      s2 += m.mu[p] * (std::exp(a * e2) - l3a);
     }
     s1 = std::min(s1, m.sigma_cut);
     s2 = std::min(s2, m.sigma_cut);
-    const double c = std::cos(th), sn = std::sin(th);
-    s.sxx = s1 * c * c + s2 * sn * sn;
-    s.syy = s1 * sn * sn + s2 * c * c;
-    s.sxy = (s1 - s2) * sn * c;
+    const double avg = 0.5 * (s1 + s2), half = 0.5 * (s1 - s2);
+    const double nxx = rad > 1e-300 ? hdiff / rad : 0.0, nxy = rad > 1e-300 ? exy / rad : 0.0;
+    s.sxx = avg + half * nxx;
+    s.syy = avg - half * nxx;
+    s.sxy = half * nxy;
     PointResult res;
     res.dezz = -(de[0] + de[1]);  // ln l3 = -(e1 + e2): incompressible
     (void)dt;
