@@ -186,6 +186,44 @@ TEST(DeckDiagnostics, TypedZeroReadsAsTheDefaultWhereOpenRadiossSaysSo) {
   EXPECT_NE(errs[0].find("field rho = 0: must be > 0"), std::string::npos) << errs[0];
 }
 
+// /MAT/LAW42 (Ogden) as the Radioss reference guide lays it out: nu and sigma_cut read 0 as
+// their defaults (0.495, 1e30: hm_read_mat42.F), the pairs are read by name; Prony terms
+// (M > 0) are refused by the field's range, and a solid part may not use the law here.
+TEST(DeckDiagnostics, OgdenLaw42CardDefaultsAndLimits) {
+  const auto dir = std::filesystem::temp_directory_path() / "hbm_deck_law42_test";
+  std::filesystem::create_directories(dir);
+  auto law42 = [](const std::string& m_field) {
+    return "/MAT/LAW42/1\nskin\n                1e-6\n"
+           "                   0                   0                   0                   0" + m_field + "\n"
+           "                3e-4                1e-6\n"
+           "                  2.                 24.\n";
+  };
+  std::ofstream(dir / "o_0000.rad") << starter(law42(""));
+  const ReadResult r = read_deck(dir / "o_0000.rad", Section::Starter);
+  ASSERT_TRUE(errors_of(r).empty()) << messages(r);
+  const Card& m = *r.deck.cards_of("/MAT/LAW42")[0];
+  EXPECT_DOUBLE_EQ(m.real(1, "nu"), 0.495);
+  EXPECT_DOUBLE_EQ(m.real(1, "sigma_cut"), 1e30);
+  EXPECT_DOUBLE_EQ(m.real(2, "mu1"), 3e-4);
+  EXPECT_DOUBLE_EQ(m.real(2, "mu2"), 1e-6);
+  EXPECT_DOUBLE_EQ(m.real(2, "mu3"), 0.0);
+  EXPECT_DOUBLE_EQ(m.real(3, "alpha2"), 24.0);
+  // M = 2 Prony terms: refused, the field named.
+  std::ofstream(dir / "o_0000.rad") << starter(law42("         2"));
+  const auto prony = errors_of(read_deck(dir / "o_0000.rad", Section::Starter));
+  ASSERT_EQ(prony.size(), 1u);
+  EXPECT_NE(prony[0].find("/MAT/LAW42/1"), std::string::npos) << prony[0];
+  EXPECT_NE(prony[0].find("field M = 2"), std::string::npos) << prony[0];
+  // A brick part on it.
+  std::string solid = kSolidPart;
+  solid.replace(solid.find("/MAT/LAW1/1"), std::string::npos, law42(""));
+  std::ofstream(dir / "o_0000.rad") << starter(cube_nodes() + "/BRICK/1\n         1         1         2         3         4"
+                                               "         5         6         7         8\n" + solid);
+  const auto on_solid = errors_of(read_deck(dir / "o_0000.rad", Section::Starter));
+  ASSERT_EQ(on_solid.size(), 1u) << messages(read_deck(dir / "o_0000.rad", Section::Starter));
+  EXPECT_NE(on_solid[0].find("applies to shell elements only"), std::string::npos) << on_solid[0];
+}
+
 // OpenRadioss accepts a /PROP/TYPE1 Thick of 0 when the part (or the element) gives the
 // thickness; the deck is in error only for a shell whose element, part and property
 // thicknesses are all 0, and the message names that element.
