@@ -165,11 +165,19 @@ PointResult return_plane_stress(const ShellMaterial& m, double epsdot, PointStre
 }  // namespace
 
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt, PointStress& s,
-                         double& epsp, double* hist, double element_rate) {
+                         double& epsp, double* hist, double element_rate, double dspin) {
   if (m.law == ShellLaw::Ogden) {
     // Total in-plane strain and its principal values e1 >= e2; l_i^a = exp(a e_i) and
     // l3 = exp(-(e1 + e2)). The stress is coaxial with the strain: sigma = (s1 + s2)/2 I +
     // (s1 - s2)/2 N with N = (e - mid I) / rad the unit deviatoric direction of the strain.
+    if (dspin != 0.0) {
+      // The material turned by dspin in the frame: E <- R E R^T (tensor shear exy = g / 2).
+      const double c = std::cos(dspin), sn = std::sin(dspin);
+      const double xx = hist[0], yy = hist[1], xy = 0.5 * hist[2];
+      hist[0] = c * c * xx - 2.0 * c * sn * xy + sn * sn * yy;
+      hist[1] = sn * sn * xx + 2.0 * c * sn * xy + c * c * yy;
+      hist[2] = 2.0 * (c * sn * (xx - yy) + (c * c - sn * sn) * xy);
+    }
     hist[0] += de[0];
     hist[1] += de[1];
     hist[2] += de[2];

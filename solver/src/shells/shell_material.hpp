@@ -121,8 +121,13 @@ struct PointResult {
 // values. A point already failed (epsp >= eps_p_max) must not be passed in.
 // element_rate >= 0: the strain rate of the yield stress, one for all points of the element
 // (the filtered rate of element_strain_rate); < 0: the point's own rate over the step.
+// dspin: the in-plane rotation of the material relative to the element frame over the step
+// [rad]; LAW42 turns its total strain by it before adding de (the frame of a triangle
+// follows its edge 1-2, which turns against the material when the triangle is stretched
+// obliquely to it). The hypoelastic laws take their stress as corotational with the frame.
 PointResult update_point(const ShellMaterial& m, const double de[3], double dt,
-                         PointStress& s, double& epsp, double* hist, double element_rate = -1.0);
+                         PointStress& s, double& epsp, double* hist, double element_rate = -1.0,
+                         double dspin = 0.0);
 
 // Equivalent strain rate of a shell element over a step (OpenRadioss mulawc.F, ISRATE 1, the
 // energy equivalent of membrane plus bending): eps^2 = 4/3 (exx^2 + eyy^2 + exx eyy + gxy^2/4)

@@ -23,8 +23,11 @@ struct ThicknessLanes {
   alignas(64) double dE[W], dezz[W];       // energy per area, thickness strain (out)
   alignas(64) double sig[kMaxThicknessPoints][3][W];
 
-  // Integrates lanes 0..n-1 of elements idx[0..n-1] of group g over the step dt.
-  void integrate(ShellGroupData& g, const std::int32_t* idx, const double* ok, std::size_t n, double dt) {
+  // Integrates lanes 0..n-1 of elements idx[0..n-1] of group g over the step dt. spin: the
+  // in-plane rotation of the material relative to the element frame per lane (update_point's
+  // dspin), or nullptr (none).
+  void integrate(ShellGroupData& g, const std::int32_t* idx, const double* ok, std::size_t n, double dt,
+                 const double* spin = nullptr) {
     const ShellMaterial& mat = g.mat;
     const ShellSection& sec = g.sec;
     const auto np = static_cast<std::size_t>(sec.n_points);
@@ -44,7 +47,8 @@ struct ThicknessLanes {
                                       g.eps_rate[e]);
         ThicknessResult tr;
         integrate_thickness(mat, sec, t[l], dm, dc, dt, &g.stress[e * np * 3], &g.epsp[e * np],
-                            nh ? &g.hist[e * np * static_cast<std::size_t>(nh)] : nullptr, tr, rate);
+                            nh ? &g.hist[e * np * static_cast<std::size_t>(nh)] : nullptr, tr, rate,
+                            spin ? spin[l] : 0.0);
         for (int c = 0; c < 3; ++c) {
           N[c][l] = tr.N[c];
           M[c][l] = tr.M[c];

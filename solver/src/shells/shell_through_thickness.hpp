@@ -24,7 +24,7 @@ struct ThicknessResult {
 inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, double t,
                                 const double dem[3], const double dk[3], double dt,
                                 double* stress, double* epsp, double* hist, ThicknessResult& r,
-                                double element_rate = -1.0) {
+                                double element_rate = -1.0, double dspin = 0.0) {
   const double ht = 0.5 * t;
   const int nh = m.n_history();
   const double eps_fail = m.eps_p_max();
@@ -47,7 +47,7 @@ inline void integrate_thickness(const ShellMaterial& m, const ShellSection& s, d
       st.sxy += c * 0.5 * (1.0 - nu) * de[2];
       pr.dezz = -nu / E * (st.sxx + st.syy - S_old);
     } else {
-      pr = update_point(m, de, dt, st, epsp[p], hist + nh * p, element_rate);
+      pr = update_point(m, de, dt, st, epsp[p], hist + nh * p, element_rate, dspin);
     }
     const double w = s.weight[p] * ht;
     r.dE += 0.5 * w * ((sp[0] + st.sxx) * de[0] + (sp[1] + st.syy) * de[1] + (sp[2] + st.sxy) * de[2]);

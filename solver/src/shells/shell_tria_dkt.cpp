@@ -80,6 +80,7 @@ struct TriaLanes {
   alignas(64) double Bx[6][W], By[6][W];               // rotation rates at the 6 nodes
   alignas(64) double dNx[3][6][W], dNy[3][6][W], kap[3][3][W];
   alignas(64) double A[W], i2A[W], ok[W], okf[W], sq[W], dEdev[W], dE[W], lmax2[W], dte[W];
+  alignas(64) double spin[W];                          // material rotation relative to the frame (LAW42)
   alignas(64) double Mg[3][3][W];                      // moments at the 3 points (force stage)
   alignas(64) double md[9][W];                         // extra: deviatoric moments at the points
   alignas(64) double Fx[6][W], Fy[6][W], Fw[3][W];
@@ -279,6 +280,15 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
       }
       b.th.dem[0][l] = dxx * dt; b.th.dem[1][l] = dyy * dt; b.th.dem[2][l] = dxy * dt;
     }
+    // LAW42 keeps a total strain: the material's in-plane spin 1/2 (dvy/dx - dvx/dy) less the
+    // frame's (edge 1-2 turns at (vy2 - vy1) / l21) turns it within the frame.
+    const bool total_strain = mat.law == ShellLaw::Ogden;
+    if (total_strain)
+      for (std::size_t l = 0; l < n; ++l) {
+        double w = 0;
+        for (int i = 0; i < 3; ++i) w += b.B1[i][l] * b.vy[i][l] - b.B2[i][l] * b.vx[i][l];
+        b.spin[l] = (0.5 * w - (b.vy[1][l] - b.vy[0][l]) / b.l21[l]) * dt;
+      }
     for (int k = 0; k < 3; ++k) lanes::sqrt_lanes(n, b.sl[k]);
     // DKT: rotation rates at the 6 nodes, curvatures at the 3 Hammer points (loops with
     // the lanes innermost: side, node and point indices are constants of each loop).
@@ -335,7 +345,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
         b.th.dk[c][l] = kc * dt;
       }
     // Through the thickness (centroid curvature kc).
-    b.th.integrate(g, idx, b.ok, n, dt);
+    b.th.integrate(g, idx, b.ok, n, dt, total_strain ? b.spin : nullptr);
     // Elastic moments of the linear curvature part (plate stiffness D_b, bending only
     // with more than one point through the thickness); generalised forces on the
     // 6-node rotations F = A/3 sum_g dN^T M_g; Kirchhoff constraints transposed onto the
