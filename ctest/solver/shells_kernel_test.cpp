@@ -274,15 +274,19 @@ TEST(ShellMaterialPoint, OgdenCutOffStepModulusAndChecks) {
   const double tangent = (m.ogden_uniaxial_stress(l * std::exp(h)) - m.ogden_uniaxial_stress(l * std::exp(-h))) / (2 * h);
   EXPECT_NEAR(m.plate_wave_speed(), std::sqrt(tangent / (m.rho * 0.75)), 1e-3 * m.plate_wave_speed());
   EXPECT_GT(m.plate_wave_speed(), 3.0 * std::sqrt(m.young() / (m.rho * 0.75)));
-  // Checks: a pair softening in its own sense, no modulus, a zero exponent.
+  // Checks (OpenRadioss's): the initial shear modulus sum(mu_p alpha_p) / 2 must be > 0;
+  // a pair of the other sign is allowed while the sum stays positive.
   ShellMaterial bad = ogden_two_pair();
-  bad.alpha[1] = -24.0;
-  EXPECT_FALSE(bad.check().empty());
-  bad = ogden_two_pair();
   bad.mu[0] = bad.mu[1] = 0.0;
   EXPECT_FALSE(bad.check().empty());
   bad = ogden_two_pair();
-  bad.alpha[0] = 0.0;
+  bad.mu[1] = -1e-4;  // 3e-4 * 2 - 1e-4 * 24 < 0
+  EXPECT_FALSE(bad.check().empty());
+  ShellMaterial mixed = ogden_two_pair();
+  mixed.mu[1] = -1e-6;  // 3e-4 * 2 - 1e-6 * 24 > 0
+  EXPECT_TRUE(mixed.check().empty());
+  bad = ogden_two_pair();
+  bad.sigma_cut = 0.0;
   EXPECT_FALSE(bad.check().empty());
 }
 
