@@ -7,10 +7,12 @@
 //   shells: L = area / longest diagonal (quad), 2 area / longest edge (triangle),
 //           plane-stress speed c = sqrt(E / ((1 - nu^2) rho)); LAW42 (Ogden, incompressible)
 //           with nu = 0.5 and E its stiffest uniaxial tangent up to a stretch of 1.6, as the
-//           engine's shells take it (solver/src/shells/shell_material.cpp);
+//           engine's shells take it (hbm/deck/ogden_law.hpp, shared with them);
 //   springs: dt = sqrt(2 m / k) with m the property mass and k the largest translational
 //           stiffness (Radioss spring time step, reference guide /PROP/TYPE4).
 #include "hbm/deck/summary.hpp"
+
+#include "hbm/deck/ogden_law.hpp"
 
 #include "id_index.hpp"
 
@@ -77,23 +79,12 @@ Material material_of(const Card* m) {
     return out;
   }
   if (kw == "/MAT/LAW42") {
-    double mu[5], al[5];
-    for (int p = 0; p < 5; ++p) {
+    double mu[kOgdenPairs], al[kOgdenPairs];
+    for (int p = 0; p < kOgdenPairs; ++p) {
       mu[p] = m->real(2, "mu" + std::to_string(p + 1));
       al[p] = m->real(3, "alpha" + std::to_string(p + 1));
     }
-    auto uniaxial = [&](double l) {  // Cauchy stress of incompressible uniaxial tension
-      double sig = 0;
-      for (int p = 0; p < 5; ++p)
-        if (mu[p] != 0.0) sig += mu[p] * (std::pow(l, al[p]) - std::pow(l, -0.5 * al[p]));
-      return sig;
-    };
-    double e = 0;
-    for (int p = 0; p < 5; ++p) e += 1.5 * mu[p] * al[p];
-    for (int i = 1; i <= 100; ++i) {
-      const double l = 1.0 + 0.6 * i / 100.0, h = 1e-4;
-      e = std::max(e, (uniaxial(l * (1 + h)) - uniaxial(l * (1 - h))) / (std::log1p(h) - std::log1p(-h)));
-    }
+    const double e = ogden_step_modulus(mu, al);
     if (e > 0) out.c_shell = std::sqrt(e / (0.75 * out.rho));
     return out;
   }

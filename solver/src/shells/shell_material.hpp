@@ -27,6 +27,7 @@
 //    each capped at sigma_cut in tension.
 #pragma once
 
+#include "hbm/deck/ogden_law.hpp"
 #include "hbm/solver/material/hardening.hpp"
 
 #include <cmath>
@@ -48,12 +49,12 @@ struct ShellMaterial {
   double K = 0, G0 = 0, Ginf = 0, beta = 0;
   // LAW42: Ogden pairs (mu_p [stress], alpha_p [-]; pairs with mu_p = 0 are unused) and the
   // tension cut-off of the principal stresses [stress].
-  static constexpr int kOgdenPairs = 5;
+  static constexpr int kOgdenPairs = hbm::deck::kOgdenPairs;
   double mu[kOgdenPairs] = {0, 0, 0, 0, 0}, alpha[kOgdenPairs] = {0, 0, 0, 0, 0};
   double sigma_cut = 1e30;
-  // LAW42: the stretch (uniaxial, in the fibre direction) up to which the stable step holds:
-  // plate_wave_speed() takes the stiffest uniaxial tangent modulus up to it.
-  static constexpr double kOgdenStepStretch = 1.6;
+  // LAW42: the stretch up to which the stable step holds (plate_wave_speed() takes the
+  // stiffest uniaxial tangent up to it; hbm/deck/ogden_law.hpp).
+  static constexpr double kOgdenStepStretch = hbm::deck::kOgdenStepStretch;
 
   bool plastic() const { return law == ShellLaw::JohnsonCook || law == ShellLaw::Tabulated; }
   // History values per integration point (LAW34: hereditary deviatoric stresses; LAW42:
