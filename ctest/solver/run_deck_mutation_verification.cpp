@@ -310,7 +310,7 @@ TEST(DeckMutationRuns, DamagedNumbersNeverCrashTheSolver) {
                          "shell_pull_failure_tria", "shell_fold_small_strain", "shell_cantilever_grav_quad",
                          "springs_nonlinear",       "springs_torsion",        "springs_damping",
                          "rigid_spring_impact",     "rigid_rwall_impact",     "rigid_tumbling",
-                         "contact_block_slide",     "contact_sphere_rwall"};
+                         "contact_block_slide",     "contact_sphere_rwall",   "shell_pull_ogden_quad"};
   std::uint64_t seed = 20261124;
   for (const char* d : decks) mutate_and_run(d, 40, seed++, o);
   std::printf("mutated runs: %d normal, %d stopped early, %d deck errors, %d stopped at 20 s, %d not mutated\n",

@@ -163,12 +163,13 @@ class Deck:
     def prop_solid(self, pid, title, isolid=0, qa=1.1, qb=0.05, h=0.1):
         self.card(f"/PROP/TYPE14/{pid}", title, [i10(isolid), f20(qa) + f20(qb) + f20(h)])
 
-    def prop_shell(self, pid, title, thick, n_points, ishell=0, hm=0.01, hf=0.01, hr=0.01, p_thick_fail=0.0):
-        """/PROP/TYPE1: Ishell, hourglass coefficients, N points, thickness, Ashear 5/6, Iplas 1."""
+    def prop_shell(self, pid, title, thick, n_points, ishell=0, hm=0.01, hf=0.01, hr=0.01, p_thick_fail=0.0,
+                   ithick=0):
+        """/PROP/TYPE1: Ishell, hourglass coefficients, N points, thickness, Ashear 5/6, Ithick, Iplas 1."""
         self.card(f"/PROP/TYPE1/{pid}", title, [
             i10(ishell) + i10(0) + i10(0) + i10(0) + i10(0) + blank(10) + f20(p_thick_fail),
             f20(hm) + f20(hf) + f20(hr) + f20(0) + f20(0),
-            i10(n_points) + i10(0) + f20(thick) + f20(5.0 / 6.0) + blank(10) + i10(0) + i10(1)])
+            i10(n_points) + i10(0) + f20(thick) + f20(5.0 / 6.0) + blank(10) + i10(ithick) + i10(1)])
 
     @staticmethod
     def spring_dof(k=0.0, c=0.0, fct1=0, h=0, fct3=0):
@@ -195,6 +196,15 @@ class Deck:
     def law2(self, mid, title, rho, e, nu, a, b, n, epsmax=0.0):
         self.card(f"/MAT/LAW2/{mid}", title,
                   [f20(rho), f20(e) + f20(nu) + i10(0), f20(a) + f20(b) + f20(n) + f20(epsmax) + f20(0)])
+
+    def law42(self, mid, title, rho, mu, alpha, sigma_cut=0.0):
+        """/MAT/LAW42 (Ogden): nu and sigma_cut (0 = defaults 0.495, 1e30), no bulk function,
+        no Prony terms; up to five (mu_p, alpha_p) pairs."""
+        mu = list(mu) + [0.0] * (5 - len(mu))
+        alpha = list(alpha) + [0.0] * (5 - len(alpha))
+        self.card(f"/MAT/LAW42/{mid}", title, [
+            f20(rho), f20(0.0) + f20(sigma_cut) + blank(10) + i10(0) + f20(0.0) + i10(0) + i10(0),
+            "".join(f20(m) for m in mu), "".join(f20(a) for a in alpha)])
 
     def law34(self, mid, title, rho, bulk, g0, ginf, beta):
         self.card(f"/MAT/LAW34/{mid}", title, [f20(rho), f20(bulk), f20(g0) + f20(ginf) + f20(beta)])
