@@ -73,6 +73,21 @@ def cantilever_grav(tria):
     d.write()
 
 
+def pulled_strip_part(d, grid, el, nx, ny, rot="000"):
+    """Part 1 of the strip's shells; node groups 1 held end (x = 0), 2 pulled end (x = L),
+    3 the corner (0, 0), 4 all nodes; the held end fixed in X, the corner in Y, every node in
+    Z (and in the rotations `rot`)."""
+    d.part(1, "strip", 1, 1)
+    d.shells(1, el)
+    d.grnod_node(1, "held end", [grid[(0, j)] for j in range(ny + 1)])
+    d.grnod_node(2, "pulled end", [grid[(nx, j)] for j in range(ny + 1)])
+    d.grnod_node(3, "corner", [grid[(0, 0)]])
+    d.grnod_node(4, "all nodes", sorted(grid.values()))
+    d.bcs(1, "held X", "100", 1)
+    d.bcs(2, "corner Y", "010", 3)
+    d.bcs(3, "in plane", "001", 4, rot=rot)
+
+
 def pull_failure(tria):
     name = "shell_pull_failure_" + ("tria" if tria else "quad")
     L, b, t, E, nu, rho = 50.0, 10.0, 1.0, 210.0, 0.3, 7.85e-6
@@ -93,15 +108,7 @@ def pull_failure(tria):
     grid, el = strip(d, nx, ny, L, b, tria)
     d.law2(1, "steel JC", rho, E, nu, a, bh, n, epsmax)
     d.prop_shell(1, "plate 1 mm", t, 3)
-    d.part(1, "strip", 1, 1)
-    d.shells(1, el)
-    d.grnod_node(1, "held end", [grid[(0, j)] for j in range(ny + 1)])
-    d.grnod_node(2, "pulled end", [grid[(nx, j)] for j in range(ny + 1)])
-    d.grnod_node(3, "corner", [grid[(0, 0)]])
-    d.grnod_node(4, "all nodes", sorted(grid.values()))
-    d.bcs(1, "held X", "100", 1)
-    d.bcs(2, "corner Y", "010", 3)
-    d.bcs(3, "in plane", "001", 4)
+    pulled_strip_part(d, grid, el, nx, ny)
     d.funct(1, "ramp", [(0, 0), (0.2, 1), (1000, 1)])
     d.impvel(1, "pull", 1, "X", 2, v)
     d.th_nodes(1, "pulled end", ["DX"], [(grid[(nx, 0)], "pulled corner")])
@@ -130,15 +137,7 @@ def pull_ogden(tria):
     grid, el = strip(d, nx, ny, L, b, tria)
     d.law42(1, "skin-like Ogden", rho, mu, alpha)
     d.prop_shell(1, "membrane 1 mm", t, 3, ithick=1)
-    d.part(1, "strip", 1, 1)
-    d.shells(1, el)
-    d.grnod_node(1, "held end", [grid[(0, j)] for j in range(ny + 1)])
-    d.grnod_node(2, "pulled end", [grid[(nx, j)] for j in range(ny + 1)])
-    d.grnod_node(3, "corner", [grid[(0, 0)]])
-    d.grnod_node(4, "all nodes", sorted(grid.values()))
-    d.bcs(1, "held X", "100", 1)
-    d.bcs(2, "corner Y", "010", 3)
-    d.bcs(3, "in plane", "001", 4, rot="111")
+    pulled_strip_part(d, grid, el, nx, ny, rot="111")
     # Ramps of 10 ms, twenty periods of the strip's first stretching mode: it hardly rings.
     d.funct(1, "ramp, pull, hold", [(0, 0), (10.0, 1), (T, 1), (T + 10.0, 0), (1000, 0)])
     d.impvel(1, "pull", 1, "X", 2, v)
