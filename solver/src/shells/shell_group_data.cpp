@@ -11,6 +11,7 @@ void ShellGroupData::allocate() {
   nodes_per_element = kind == ShellKind::QuadBT ? 4 : 3;
   const std::size_t np = static_cast<std::size_t>(sec.n_points);
   thick0 = thick;
+  wave_speed = mat.plate_wave_speed();
   stress.assign(n * np * 3, 0.0);
   epsp.assign(n * np, 0.0);
   eps_rate.assign(mat.plastic() && mat.plasticity.rate_filter > 0.0 ? n : 0, 0.0);

@@ -37,6 +37,9 @@ struct ShellGroupData {
   std::size_t n = 0;
   ShellMaterial mat;
   ShellSection sec;
+  // mat.plate_wave_speed(), taken once by allocate(): for LAW42 it samples the law's
+  // tangent over a range of stretches, too dear for every cycle.
+  double wave_speed = 0;  // [length/time]
 
   std::vector<std::int32_t> conn;      // n * nodes_per_element, 0-based node indices
   std::vector<std::int64_t> user_id;   // element ids

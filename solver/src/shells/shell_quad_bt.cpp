@@ -168,7 +168,7 @@ ShellKernelTotals quad_bt_forces(ShellGroupData& g, const ShellNodalView& nv,
   const ShellSection& sec = g.sec;
   const int np = sec.n_points;
   const double E = mat.young(), G = mat.shear_modulus();
-  const double cwave = mat.plate_wave_speed();
+  const double cwave = g.wave_speed;
   const double hdt = 0.5 * dt;
   static thread_local QuadLanes lanes;
   QuadLanes& b = lanes;

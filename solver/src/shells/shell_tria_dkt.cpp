@@ -219,7 +219,7 @@ ShellKernelTotals tria_dkt_forces(ShellGroupData& g, const ShellNodalView& nv,
   const ShellSection& sec = g.sec;
   const int np = sec.n_points;
   const double E = mat.young(), nu = mat.poisson();
-  const double cwave = mat.plate_wave_speed();
+  const double cwave = g.wave_speed;
   const double hdt = 0.5 * dt;
   static thread_local TriaLanes lanes;
   TriaLanes& b = lanes;
