@@ -1311,7 +1311,8 @@ FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, Mod
   // the top vertebra's upper endplate; the rest is the lungs.
   if (opt.lungs) {
     const double half_width = opt.mediastinum_half_width > 0 ? opt.mediastinum_half_width : g.mediastinum.half_width;
-    add_mediastinum(m, half_width, g.vertebra(g.mediastinum.top_vertebra).upper.y());
+    const double top_z = g.vertebra(g.mediastinum.top_vertebra).upper.y();  // upper endplate (x, z): its height
+    add_mediastinum(m, half_width, top_z);
   }
   return m;
 }
