@@ -5,6 +5,7 @@
 // and pelvis are shells on the inner-wall ring sharing the hexahedra nodes (as in the
 // seed model); head and limbs are shell envelopes in rigid bodies.
 #include "hbm/deckgen/body_mesher.hpp"
+#include "hbm/deckgen/abdominal_wall.hpp"
 #include "hbm/deckgen/organ_variants.hpp"
 #include "hbm/deckgen/rib_fracture.hpp"
 
@@ -134,12 +135,7 @@ class Builder {
   // Returns the shells made, triangles as quads with n4 = n3.
   std::vector<std::array<int, 4>> skin_quad(int quad_part, int tri_part, const std::array<int, 4>& q) {
     auto P = [&](int i) { return m_.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])]; };
-    auto ang = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
-      return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
-    };
-    double w = std::max(ang((P(1) - P(0)).cross(P(2) - P(0)), (P(2) - P(0)).cross(P(3) - P(0))),
-                        ang((P(2) - P(1)).cross(P(3) - P(1)), (P(3) - P(1)).cross(P(0) - P(1))));
-    if (w <= 15) {
+    if (quad_warpage_deg(P(0), P(1), P(2), P(3)) <= 15) {
       shell(quad_part, q);
       return {q};
     }
@@ -1314,6 +1310,8 @@ FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, Mod
     const double top_z = g.vertebra(g.mediastinum.top_vertebra).upper.y();  // upper endplate (x, z): its height
     add_mediastinum(m, half_width, top_z);
   }
+  if (opt.abdominal_wall)
+    add_abdominal_wall(m, convert(g.material("abdominal_wall"), "abdominal_wall"), g.shell_sections.at("abdominal_wall").total_thickness);
   return m;
 }
 

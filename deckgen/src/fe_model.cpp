@@ -2,6 +2,9 @@
 // FeModel helpers: registration of parts and materials, wave speeds.
 #include "hbm/deckgen/fe_model.hpp"
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -21,6 +24,13 @@ double FeMaterial::plate_wave_speed() const {
     return std::sqrt(e / (rho * (1 - n * n)));
   }
   return std::sqrt(E / (rho * (1 - nu * nu)));
+}
+
+double quad_warpage_deg(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3) {
+  auto angle = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+    return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
+  };
+  return std::max(angle((p1 - p0).cross(p2 - p0), (p2 - p0).cross(p3 - p0)), angle((p2 - p1).cross(p3 - p1), (p3 - p1).cross(p0 - p1)));
 }
 
 int FeModel::add_material(FeMaterial m) {

@@ -315,13 +315,14 @@ std::map<std::string, ShellSection> read_shell_sections(const std::filesystem::p
     out[t.text(r, "name")] = s;
   }
   for (const char* need : {"sternum", "costal_cartilage", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope",
-                           "thoracic_inlet_fascia"})
+                           "thoracic_inlet_fascia", "abdominal_wall"})
     if (!out.count(need)) throw SourceError(file, t.rows().back().line, "name", std::string("section '") + need + "' is missing");
   const ShellSection& cc = out["costal_cartilage"];
   if (cc.height <= 0 || cc.width <= 0) throw SourceError(file, cc.line, "height_mm", "costal cartilage needs height and width");
   if (out["pelvic_joints"].joint_gap <= 0)
     throw SourceError(file, out["pelvic_joints"].line, "joint_gap_mm", "the pelvic joint bands need the joint space they stand for (> 0)");
-  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope", "thoracic_inlet_fascia"})
+  for (const char* need : {"sternum", "clavicle", "pelvis_cortex", "pelvic_joints", "skin", "envelope", "thoracic_inlet_fascia",
+                           "abdominal_wall"})
     if (out[need].total_thickness <= 0) throw SourceError(file, out[need].line, "total_thickness_mm", std::string(need) + " needs a thickness > 0");
   return out;
 }

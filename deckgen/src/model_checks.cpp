@@ -444,12 +444,7 @@ std::vector<QualityRow> quality_check(const FeModel& m, const QualityLimits& lim
       jmin = std::min(jmin, d);
       jmax = std::max(jmax, d);
     }
-    auto angle = [](const V3& u, const V3& v) {
-      return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180 / M_PI;
-    };
-    double w1 = angle((p[1] - p[0]).cross(p[2] - p[0]), (p[2] - p[0]).cross(p[3] - p[0]));
-    double w2 = angle((p[2] - p[1]).cross(p[3] - p[1]), (p[3] - p[1]).cross(p[0] - p[1]));
-    double warp = std::max(w1, w2);
+    double warp = quad_warpage_deg(p[0], p[1], p[2], p[3]);
     double jr = jmax > 0 ? jmin / jmax : -1, ar = max_side(p) / min_side(p);
     row.elements++;
     if (jmin <= 0) row.inverted++;

@@ -45,6 +45,10 @@ int main(int argc, char** argv) {
   bool pleura = false;
   app.add_flag("--pleura", pleura,
                "variant: the thoracic organ block slides on the chest wall (frictionless contact; default: shared nodes)");
+  bool no_abdominal_wall = false;
+  app.add_flag("--no-abdominal-wall", no_abdominal_wall,
+               "variant: no abdominal wall membrane (materials.csv abdominal_wall): the trunk wall of flesh and skin alone, "
+               "the default model before 2026-11-25");
   bool undifferentiated = false;
   app.add_flag("--undifferentiated-organs", undifferentiated,
                "variant: the seed's undifferentiated, air-filled thoracic organ block (materials.csv thoracic_organs) "
@@ -93,6 +97,7 @@ int main(int argc, char** argv) {
       o.mediastinum_half_width = mediastinum;
     }
     o.lungs = !undifferentiated;
+    o.abdominal_wall = !no_abdominal_wall;
     if (app.count("--rib-fracture")) {
       const auto& b = g.rib_bone;
       if (!(rib_fracture_age >= b.age_min && rib_fracture_age <= b.age_max)) {

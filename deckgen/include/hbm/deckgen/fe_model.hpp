@@ -111,4 +111,9 @@ struct FeModel {
   std::size_t remove_unreferenced_nodes();
 };
 
+// Warpage of a quad (degrees): the larger angle between the normals of the two triangles
+// of either diagonal (0 for a flat quad). The quality check limits it, and the skin and
+// wall layers split a quad above 15 degrees into two triangles.
+double quad_warpage_deg(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3);
+
 }  // namespace hbm::deckgen
