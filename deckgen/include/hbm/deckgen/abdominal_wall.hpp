@@ -15,6 +15,9 @@
 //    cartilage, pelvic cortex and joint shells, spine bricks), whose outward normal n (from
 //    the brick's centroid) has n_x > -0.5 (not the back, where the column and the erector
 //    spinae are) and n_z > -0.7 (not the block's floor: the pelvic floor is not this layer).
+//  - The tetra flesh rests on every other level of the block's surface: two chosen faces
+//    that share an edge whose nodes the flesh does not hold become one quad, the flesh
+//    cell's inner face (180 quads in the default model instead of 310 faces).
 //  - The layer shares its nodes with the organ block, the flesh, the lower ribs and costal
 //    cartilage at the top and the pelvic cortex at the bottom: no new node.
 //  - A face warped by more than 15 degrees becomes two triangles along its shorter diagonal

@@ -20,7 +20,7 @@ struct MesherOptions {
   int torso_around = 32;  // nodes around the torso (multiple of 8)
   int neck_around = 16;   // nodes around the neck (multiple of 8)
   int limb_around = 12;   // nodes around a limb envelope
-  double limb_ring_spacing = 45;  // mm between limb envelope rings (32 before the tetra flesh took the elements)
+  double limb_ring_spacing = 45;  // mm between limb envelope rings (32 before the tetra flesh, 40 before the abdominal wall took elements)
   int head_cells = 6;     // cube-sphere cells per cube face edge
   int clavicle_around = 6, clavicle_along = 8;
   // Torso flesh as one layer of average nodal pressure tetras over cells two layers high
