@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Renders the generated model deck (decks/hbm50/hbm50.inc) with gnuplot (Debian
 # gnuplot-nox, pngcairo terminal, polygons depth-sorted): outer surface (skin, head and limb
-# envelopes, translucent) and the rib cage, sternum, costal cartilage, clavicles, scapulae
-# and pelvis, coloured by part. VTK offscreen needs an X server or OSMesa, which the Debian
+# envelopes, translucent) and the rib cage, sternum, costal cartilage, clavicles, scapulae,
+# pelvis and abdominal wall membrane, coloured by part. VTK offscreen needs an X server or OSMesa, which the Debian
 # python3-vtk9 build here lacks; gnuplot does it headless.
 # Usage: /usr/bin/python3 deckgen/scripts/render_model.py [deck.inc] [out.png]
 import os
@@ -51,6 +51,7 @@ groups = [  # (prefixes, colour, translucent, legend)
     (('clavicle',), '#c0392b', False, 'clavicles'),
     (('scapula',), '#8e44ad', False, 'scapulae (rigid)'),
     (('pelvi',), '#27ae60', False, 'pelvis cortex, SI/pubic joints'),
+    (('abdominal_wall',), '#e07a9a', False, 'abdominal wall membrane'),
     (('skin',), '#e8b49a', True, 'skin'),
     (('head', 'upper_arm', 'forearm', 'thigh', 'leg'), '#b0a090', True, 'rigid envelopes'),
 ]
@@ -69,6 +70,9 @@ for k, (prefixes, col, transl, legend) in enumerate(groups):
 skel = [p for p, g in zip(plots, groups) if not g[2]]
 outer = [p for p, g in zip(plots, groups) if g[2]]
 skel = [p.replace('fc rgb "#C8', 'fc rgb "#') for p in skel]
+# Legend of the right panel as labels in each group's colour (a polygon plot has no key sample).
+labels = '\n'.join(f'set label {k + 1} "{g[3]}" at screen 0.55, {0.40 - 0.035 * k:.3f} left tc rgb "{g[1]}"'
+                    for k, g in enumerate(g for g in groups if not g[2]))
 outer = [p.replace('fc rgb "#C8', 'fc rgb "#') for p in outer]
 script = f'''
 set terminal pngcairo size 1800,950 enhanced font "DejaVu Sans,15"
@@ -83,8 +87,8 @@ set title "outer surface: skin (shells), head and limb envelopes (rigid bodies)"
 unset key
 splot {", ".join(outer)}
 set view 70, 35, 1.15
-set title "rib cage, sternum, costal cartilage, clavicles, scapulae, pelvis"
-set key at screen 0.99, 0.88 right top samplen 1
+set title "rib cage, sternum, costal cartilage, clavicles, scapulae, pelvis, abdominal wall"
+{labels}
 splot {", ".join(skel)}
 unset multiplot
 '''

@@ -24,7 +24,7 @@ constexpr std::array<std::array<int, 4>, 6> kBrickFaces{
 
 }  // namespace
 
-AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double thickness_mm) {
+AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double thickness_mm, double z_pubis) {
   if (!(thickness_mm > 0) || !std::isfinite(thickness_mm))
     throw std::invalid_argument("abdominal wall: the layer thickness must be a positive number of mm");
   const int organs = m.find_part("abdominal_organs");
@@ -101,6 +101,7 @@ AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double th
     if (nrm.dot(mid - f.centroid_of_brick) < 0) nrm = -nrm;
     nrm.normalize();
     if (nrm.x() <= -0.5 || nrm.z() <= -0.7) continue;  // the back (column side), the block's floor
+    if (mid.z() < z_pubis) continue;                     // below the pubic crest: the perineum
     layer.push_back(f.nodes);
   }
   if (layer.empty()) throw std::invalid_argument("abdominal wall: no face of the abdominal organ block faces the trunk-wall flesh");

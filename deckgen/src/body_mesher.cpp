@@ -1311,7 +1311,8 @@ FeModel build_body_model(const GeometrySources& g, const MesherOptions& opt, Mod
     add_mediastinum(m, half_width, top_z);
   }
   if (opt.abdominal_wall)
-    add_abdominal_wall(m, convert(g.material("abdominal_wall"), "abdominal_wall"), g.shell_sections.at("abdominal_wall").total_thickness);
+    add_abdominal_wall(m, convert(g.material("abdominal_wall"), "abdominal_wall"), g.shell_sections.at("abdominal_wall").total_thickness,
+                       g.pelvis.at("pubic_symphysis").z());
   return m;
 }
 

@@ -14,16 +14,18 @@
 //    `flesh`), not lying on another part (no other part holds all four nodes: rib, costal
 //    cartilage, pelvic cortex and joint shells, spine bricks), whose outward normal n (from
 //    the brick's centroid) has n_x > -0.5 (not the back, where the column and the erector
-//    spinae are) and n_z > -0.7 (not the block's floor: the pelvic floor is not this layer).
+//    spinae are) and n_z > -0.7 (not the block's floor: the pelvic floor is not this layer),
+//    and whose centre lies above `z_pubis`, the pubic symphysis' height: the wall inserts on
+//    the pubic crest and the inguinal ligament, not in front of the perineum below them.
 //  - The tetra flesh rests on every other level of the block's surface: two chosen faces
 //    that share an edge whose nodes the flesh does not hold become one quad, the flesh
-//    cell's inner face (180 quads in the default model instead of 310 faces).
+//    cell's inner face (160 quads in the default model).
 //  - The layer shares its nodes with the organ block, the flesh, the lower ribs and costal
 //    cartilage at the top and the pelvic cortex at the bottom: no new node.
 //  - A face warped by more than 15 degrees becomes two triangles along its shorter diagonal
 //    (part `abdominal_wall_tria`), as the skin does.
 //  - Mass: the layer's tissue is also in the flesh tetras that fill the wall; its own mass
-//    (density x thickness x area, about 0.1 kg) is counted twice and reported in the note.
+//    (density x thickness x area, 0.07 kg) is counted twice and reported in the note.
 #pragma once
 
 #include "hbm/deckgen/fe_model.hpp"
@@ -39,9 +41,9 @@ struct AbdominalWallLayer {
 };
 
 // Adds the parts `abdominal_wall` (quads) and `abdominal_wall_tria` with `material` (added
-// to the model) and the shell thickness `thickness_mm`; returns what it made. Throws
-// std::invalid_argument if the model has no part `abdominal_organs`, if the thickness is
-// not positive, or if no face qualifies.
-AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double thickness_mm);
+// to the model) and the shell thickness `thickness_mm`, on the faces above the height
+// `z_pubis` (mm); returns what it made. Throws std::invalid_argument if the model has no
+// part `abdominal_organs`, if the thickness is not positive, or if no face qualifies.
+AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double thickness_mm, double z_pubis);
 
 }  // namespace hbm::deckgen
