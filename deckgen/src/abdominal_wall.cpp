@@ -101,7 +101,7 @@ AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double th
     if (nrm.dot(mid - f.centroid_of_brick) < 0) nrm = -nrm;
     nrm.normalize();
     if (nrm.x() <= -0.5 || nrm.z() <= -0.7) continue;  // the back (column side), the block's floor
-    if (mid.z() < z_pubis) continue;                     // below the pubic crest: the perineum
+    if (mid.z() < z_pubis) continue;                     // below the symphysis: in front of the perineum
     layer.push_back(f.nodes);
   }
   if (layer.empty()) throw std::invalid_argument("abdominal wall: no face of the abdominal organ block faces the trunk-wall flesh");
