@@ -273,7 +273,7 @@ void print_model_summary(std::ostream& os, const Deck& d) {
     if (c.keyword() == "/MAT/LAW34") {
       os << "  K " << fmt(c.real(1, "K")) << "  G0 " << fmt(c.real(2, "G0")) << "  Ginf " << fmt(c.real(2, "Ginf"));
     } else if (c.keyword() == "/MAT/LAW42") {
-      for (int p = 1; p <= 5; ++p) {
+      for (int p = 1; p <= kOgdenPairs; ++p) {
         const double mu = c.real(2, "mu" + std::to_string(p));
         if (mu != 0.0) os << "  mu" << p << " " << fmt(mu) << " alpha" << p << " " << fmt(c.real(3, "alpha" + std::to_string(p)));
       }

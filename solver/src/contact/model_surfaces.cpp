@@ -3,6 +3,7 @@
 #include "model_surfaces.hpp"
 
 #include "deck_fields.hpp"
+#include "hbm/deck/ogden_law.hpp"
 
 #include <algorithm>
 
@@ -31,9 +32,12 @@ bool material_moduli(const hbm::deck::Card& mat, double& young, double& bulk) {
   if (kw == "/MAT/LAW42") {
     // Small-strain moduli as OpenRadioss's hm_read_mat42.F stores them: GS = sum mu_p
     // alpha_p (twice the shear modulus), E = GS (1 + nu), K = GS (1 + nu) / (3 (1 - 2 nu)).
-    double gs = 0;
-    for (int p = 1; p <= 5; ++p)
-      gs += real_of(mat, 2, {"mu" + std::to_string(p)}) * real_of(mat, 3, {"alpha" + std::to_string(p)});
+    double mu[hbm::deck::kOgdenPairs], alpha[hbm::deck::kOgdenPairs];
+    for (int p = 0; p < hbm::deck::kOgdenPairs; ++p) {
+      mu[p] = real_of(mat, 2, {"mu" + std::to_string(p + 1)});
+      alpha[p] = real_of(mat, 3, {"alpha" + std::to_string(p + 1)});
+    }
+    const double gs = 2.0 * hbm::deck::ogden_shear_modulus(mu, alpha);
     const double nu = real_of(mat, 1, {"nu"});
     young = gs * (1.0 + nu);
     bulk = young / (3.0 * (1.0 - 2.0 * nu));

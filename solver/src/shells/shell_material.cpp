@@ -12,11 +12,7 @@ double ShellMaterial::ogden_uniaxial_stress(double l) const { return hbm::deck::
 
 double ShellMaterial::young() const {
   if (law == ShellLaw::Viscoelastic) return 9.0 * K * G0 / (3.0 * K + G0);
-  if (law == ShellLaw::Ogden) {
-    double g = 0;
-    for (int p = 0; p < kOgdenPairs; ++p) g += 0.5 * mu[p] * alpha[p];
-    return 3.0 * g;
-  }
+  if (law == ShellLaw::Ogden) return 3.0 * hbm::deck::ogden_shear_modulus(mu, alpha);
   return E;
 }
 
@@ -40,9 +36,7 @@ std::string_view ShellMaterial::check() const {
   if (law == ShellLaw::Ogden) {
     // The initial shear modulus sum(mu_p alpha_p) / 2 must be > 0, the one condition
     // OpenRadioss's starter puts on the pairs (hm_read_mat42.F, message 828).
-    double g = 0;
-    for (int p = 0; p < kOgdenPairs; ++p) g += 0.5 * mu[p] * alpha[p];
-    if (!(g > 0)) return "LAW42 needs an initial shear modulus sum(mu_p alpha_p) / 2 > 0";
+    if (!(hbm::deck::ogden_shear_modulus(mu, alpha) > 0)) return "LAW42 needs an initial shear modulus sum(mu_p alpha_p) / 2 > 0";
     if (!(sigma_cut > 0)) return "LAW42 needs sigma_cut > 0";
     return {};
   }

@@ -14,6 +14,14 @@ inline constexpr int kOgdenPairs = 5;
 // failure strain (about 1.5).
 inline constexpr double kOgdenStepStretch = 1.6;
 
+// Initial (small-strain) shear modulus G = sum_p mu_p alpha_p / 2 (Ogden 1972); OpenRadioss
+// asks it to be > 0 (hm_read_mat42.F) and stores 2 G as its GS.
+inline double ogden_shear_modulus(const double mu[kOgdenPairs], const double alpha[kOgdenPairs]) {
+  double g = 0;
+  for (int p = 0; p < kOgdenPairs; ++p) g += 0.5 * mu[p] * alpha[p];
+  return g;
+}
+
 // Cauchy stress of incompressible uniaxial tension at stretch l (l2 = l3 = l^-1/2):
 // sum_p mu_p (l^a_p - l^(-a_p/2)) (Ogden 1972).
 inline double ogden_uniaxial_stress(const double mu[kOgdenPairs], const double alpha[kOgdenPairs], double l) {
@@ -27,8 +35,7 @@ inline double ogden_uniaxial_stress(const double mu[kOgdenPairs], const double a
 // 2) or the stiffest uniaxial tangent d sigma / d ln(l) up to kOgdenStepStretch, sampled every
 // 1 %, whichever is larger (the law stiffens with the stretch).
 inline double ogden_step_modulus(const double mu[kOgdenPairs], const double alpha[kOgdenPairs]) {
-  double e = 0;
-  for (int p = 0; p < kOgdenPairs; ++p) e += 1.5 * mu[p] * alpha[p];
+  double e = 3.0 * ogden_shear_modulus(mu, alpha);
   const double h = 1e-4;
   for (int i = 1; i <= 100; ++i) {
     const double l = 1.0 + (kOgdenStepStretch - 1.0) * i / 100.0;
