@@ -57,7 +57,7 @@ AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double th
 
   // Boundary faces of the organ block: faces one organ brick has, with that brick's centroid.
   struct Face {
-    std::array<int, 4> nodes;
+    std::array<int, 4> nodes, sorted;
     Eigen::Vector3d centroid_of_brick;
   };
   std::map<std::array<int, 4>, int> count;  // sorted node indices -> organ bricks with the face
@@ -74,16 +74,14 @@ AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double th
       std::array<int, 4> key = q;
       std::sort(key.begin(), key.end());
       ++count[key];
-      faces.push_back({q, c});
+      faces.push_back({q, key, c});
     }
   }
 
   auto P = [&](int n) -> const Eigen::Vector3d& { return m.nodes[static_cast<std::size_t>(n)]; };
   std::vector<std::array<int, 4>> layer;
   for (const Face& f : faces) {
-    std::array<int, 4> key = f.nodes;
-    std::sort(key.begin(), key.end());
-    if (count[key] != 1 || std::adjacent_find(key.begin(), key.end()) != key.end()) continue;
+    if (count[f.sorted] != 1 || std::adjacent_find(f.sorted.begin(), f.sorted.end()) != f.sorted.end()) continue;
     int flesh_nodes = 0;
     for (int n : f.nodes) flesh_nodes += in_flesh[static_cast<std::size_t>(n)];
     if (flesh_nodes < 2) continue;
@@ -185,20 +183,16 @@ AbdominalWallLayer add_abdominal_wall(FeModel& m, FeMaterial material, double th
     out.trias += 2;
   }
   out.mass_kg = material.rho * thickness_mm * out.area_mm2;
-  for (int n : layer_nodes)
+  for (int n : layer_nodes) {
+    bool rib = false, pelvis = false;
     for (int p : other[static_cast<std::size_t>(n)]) {
-      const std::string& region = m.parts[static_cast<std::size_t>(p)].region;
-      if (region == "ribs" || region == "cartilage") {
-        ++out.rib_nodes;
-        break;
-      }
+      const FePart& part = m.parts[static_cast<std::size_t>(p)];
+      rib = rib || part.region == "ribs" || part.region == "cartilage";
+      pelvis = pelvis || (part.region == "pelvis" && part.kind == ElementKind::Shell);
     }
-  for (int n : layer_nodes)
-    for (int p : other[static_cast<std::size_t>(n)])
-      if (m.parts[static_cast<std::size_t>(p)].region == "pelvis" && m.parts[static_cast<std::size_t>(p)].kind == ElementKind::Shell) {
-        ++out.pelvis_nodes;
-        break;
-      }
+    out.rib_nodes += rib ? 1 : 0;
+    out.pelvis_nodes += pelvis ? 1 : 0;
+  }
   std::ostringstream note;
   note << std::fixed << std::setprecision(3) << "abdominal wall: " << out.quads << " quads and " << out.trias
        << " triangles on the abdominal organ block's front and flanks, " << std::setprecision(0) << out.area_mm2
