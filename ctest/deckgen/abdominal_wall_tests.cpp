@@ -6,11 +6,11 @@
 #include "hbm/deckgen/abdominal_wall.hpp"
 #include "hbm/deckgen/body_mesher.hpp"
 #include "hbm/deckgen/geometry_sources.hpp"
+#include "model_test_support.hpp"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -19,30 +19,17 @@ using namespace hbm::deckgen;
 
 namespace {
 
-const GeometrySources& geometry() {
-  static const GeometrySources g = load_geometry(std::filesystem::path(HBM_SOURCE_DIR) / "geometry");
-  return g;
-}
+const GeometrySources& geometry() { return test::committed_geometry(); }
 
 const FeModel& default_model() {
   static const FeModel m = build_body_model(geometry(), MesherOptions{});
   return m;
 }
 
-// Nodes of the elements of the parts `pick` selects.
+// Nodes of the elements of the parts whose FePart `pick` selects.
 template <class Pick>
 std::set<int> nodes_of(const FeModel& m, Pick pick) {
-  std::set<int> out;
-  auto add = [&](const auto& elements, const std::vector<int>& part_of) {
-    for (std::size_t e = 0; e < elements.size(); ++e)
-      if (pick(m.parts[static_cast<std::size_t>(part_of[e])]))
-        for (int n : elements[e]) out.insert(n);
-  };
-  add(m.bricks, m.brick_part);
-  add(m.tetras, m.tetra_part);
-  add(m.shells, m.shell_part);
-  add(m.trias, m.tria_part);
-  return out;
+  return test::nodes_of(m, [&](int p) { return pick(m.parts[static_cast<std::size_t>(p)]); });
 }
 
 bool is_wall(const FePart& p) { return p.name == "abdominal_wall" || p.name == "abdominal_wall_tria"; }

@@ -8,6 +8,7 @@
 #include "hbm/deckgen/body_mesher.hpp"
 #include "hbm/deckgen/model_checks.hpp"
 #include "hbm/deckgen/organ_variants.hpp"
+#include "model_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,10 +22,8 @@ using namespace hbm::deckgen;
 
 namespace {
 
-const GeometrySources& geometry() {
-  static const GeometrySources g = load_geometry(std::filesystem::path(HBM_SOURCE_DIR) / "geometry");
-  return g;
-}
+const GeometrySources& geometry() { return test::committed_geometry(); }
+using test::nodes_of;
 
 // The seed's undifferentiated, air-filled thoracic organ block (hbm-deckgen
 // --undifferentiated-organs): what the band and pleura variants start from.
@@ -53,23 +52,6 @@ const FeModel& lungs_model() {
 
 bool chest_wall(const std::string& part) {
   return part == "flesh_thorax" || part == "flesh_presternal" || part == "costal_cartilage" || part == "sternum" || part.rfind("rib_", 0) == 0;
-}
-
-// Nodes used by the elements of the parts `pick` selects.
-template <class Pick>
-std::set<int> nodes_of(const FeModel& m, Pick pick) {
-  std::set<int> out;
-  auto add = [&](const auto& elements, const std::vector<int>& part_of) {
-    for (std::size_t e = 0; e < elements.size(); ++e)
-      if (pick(part_of[e]))
-        for (int n : elements[e]) out.insert(n);
-  };
-  add(m.bricks, m.brick_part);
-  add(m.tetras, m.tetra_part);
-  add(m.shells, m.shell_part);
-  add(m.trias, m.tria_part);
-  add(m.springs, m.spring_part);
-  return out;
 }
 
 double part_mass(const FeModel& m, int part) {
